@@ -1,0 +1,299 @@
+#include "photon_map.h"
+
+#include <tbb/parallel_for.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+namespace gonio {
+
+namespace {
+
+constexpr std::size_t kChunkBytes = 8 << 20;
+constexpr float kHalfPi = 1.5707964f;
+constexpr float kAngleSlack = 1e-4f;  // rounding in files written by other programs
+
+bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Parses the numbers of one line into `out`; returns how many or -1 on a non-number.
+int ParseNumbers(const char*& p, const char* end, float* out, int capacity) {
+    int n = 0;
+    while (true) {
+        while (p < end && IsBlank(*p)) ++p;
+        if (p >= end || *p == '\n') return n;
+        float value;
+        const auto result = std::from_chars(p, end, value);
+        if (result.ec != std::errc() || (result.ptr < end && !IsBlank(*result.ptr) &&
+                                         *result.ptr != '\n')) {
+            return -1;
+        }
+        if (n < capacity) out[n] = value;
+        ++n;
+        p = result.ptr;
+    }
+}
+
+std::string CheckPhoton(const float* row, int stride) {
+    for (int i = 0; i < stride; ++i) {
+        if (!std::isfinite(row[i])) return "expected finite numbers";
+    }
+    if (row[kThetaIn] < -kAngleSlack || row[kThetaIn] > kHalfPi + kAngleSlack) {
+        return "expected theta_in in [0, pi/2] radians";
+    }
+    if (row[kThetaOut] < -kAngleSlack || row[kThetaOut] > kHalfPi + kAngleSlack) {
+        return "expected theta_out in [0, pi/2] radians (photons escaping downwards have no line)";
+    }
+    if (!(row[kProbability] > 0.0f)) return "expected a positive probability";
+    return {};
+}
+
+}  // namespace
+
+struct PhotonMapReader::Piece {
+    std::vector<float> rows;
+    std::uint64_t lines = 0;
+    std::uint64_t errorLine = 0;  // 1-based within the piece; 0 if none
+    std::string error;
+};
+
+PhotonMapReader::PhotonMapReader(const std::string& path) : path_(path) {
+    file_ = std::fopen(path.c_str(), "rb");
+    if (!file_) throw PhotonMapIoError(path + ": cannot open: " + std::strerror(errno));
+    std::string line;
+    int c;
+    while ((c = std::fgetc(file_)) != EOF && c != '\n') {
+        line.push_back(static_cast<char>(c));
+        if (line.size() > 256) break;
+    }
+    header_.count = ParseHeaderLine(line);
+}
+
+PhotonMapReader::~PhotonMapReader() {
+    if (file_) std::fclose(file_);
+}
+
+std::uint64_t PhotonMapReader::ParseHeaderLine(const std::string& line) {
+    const char* p = line.data();
+    const char* end = p + line.size();
+    std::uint64_t numbers[2] = {0, 0};
+    int n = 0;
+    while (true) {
+        while (p < end && IsBlank(*p)) ++p;
+        if (p >= end) break;
+        if (n == 2) {  // a third number: not a photon map header
+            n = -1;
+            break;
+        }
+        const auto result = std::from_chars(p, end, numbers[n]);
+        if (result.ec != std::errc() || (result.ptr < end && !IsBlank(*result.ptr))) {
+            n = -1;
+            break;
+        }
+        p = result.ptr;
+        ++n;
+    }
+    if (n != 1 && n != 2) {
+        throw PhotonMapError(path_ +
+                             ":1: expected the photon count (optionally followed by the number "
+                             "of traced paths) on the first line; is this a photon map?");
+    }
+    header_.paths = n == 2 ? numbers[1] : numbers[0];
+    if (header_.paths < numbers[0]) {
+        throw PhotonMapError(path_ + ":1: traced paths (" + std::to_string(header_.paths) +
+                             ") fewer than photons (" + std::to_string(numbers[0]) + ")");
+    }
+    return numbers[0];
+}
+
+void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vector<float>& rows) {
+    if (ncomps_ == 0) {  // the first photon line fixes the number of colour values
+        const char* p = begin;
+        while (p < end) {
+            const char* q = p;
+            float scratch[64];
+            const int n = ParseNumbers(q, end, scratch, 64);
+            if (n == 0) {  // a blank line
+                p = q + 1;
+                continue;
+            }
+            if (n < kFirstColour + 1) {
+                throw PhotonMapError(path_ + ":" + std::to_string(lineNumber_ + 1) +
+                                     ": expected theta_in phi_in theta_out phi_out probability "
+                                     "and at least one colour value");
+            }
+            ncomps_ = n - kFirstColour;
+            break;
+        }
+        if (ncomps_ == 0) return;
+    }
+    const int stride = kFirstColour + ncomps_;
+    const std::size_t bytes = end - begin;
+    const int numPieces = static_cast<int>(std::clamp<std::size_t>(bytes >> 18, 1, 16));
+    std::vector<const char*> cuts(numPieces + 1, end);
+    cuts[0] = begin;
+    for (int i = 1; i < numPieces; ++i) {
+        const char* guess = std::max(cuts[i - 1], begin + bytes * i / numPieces);
+        const char* nl = static_cast<const char*>(std::memchr(guess, '\n', end - guess));
+        cuts[i] = nl ? nl + 1 : end;
+    }
+    std::vector<Piece> pieces(numPieces);
+    tbb::parallel_for(0, numPieces, [&](int i) {
+        Piece& piece = pieces[i];
+        piece.rows.reserve((cuts[i + 1] - cuts[i]) / (stride * 8) + 16);
+        std::vector<float> row(stride);
+        const char* p = cuts[i];
+        while (p < cuts[i + 1]) {
+            ++piece.lines;
+            const int n = ParseNumbers(p, cuts[i + 1], row.data(), stride);
+            if (n == 0) {  // a blank line
+                ++p;
+                continue;
+            }
+            std::string error;
+            if (n < 0) {
+                error = "expected numbers";
+            } else if (n != stride) {
+                error = "expected " + std::to_string(stride) + " values (5 + " +
+                        std::to_string(ncomps_) + " colours, as on the first photon line), got " +
+                        std::to_string(n);
+            } else {
+                error = CheckPhoton(row.data(), stride);
+            }
+            if (!error.empty()) {
+                piece.error = error;
+                piece.errorLine = piece.lines;
+                return;
+            }
+            piece.rows.insert(piece.rows.end(), row.begin(), row.end());
+            ++p;  // past the newline
+        }
+    });
+    for (Piece& piece : pieces) {
+        if (!piece.error.empty()) {
+            throw PhotonMapError(path_ + ":" + std::to_string(lineNumber_ + piece.errorLine) +
+                                 ": " + piece.error);
+        }
+        const std::uint64_t photons = piece.rows.size() / stride;
+        if (photonsRead_ + photons > header_.count) {
+            throw PhotonMapError(path_ + ": more photon lines than the " +
+                                 std::to_string(header_.count) + " the first line announces");
+        }
+        photonsRead_ += photons;
+        lineNumber_ += piece.lines;
+        rows.insert(rows.end(), piece.rows.begin(), piece.rows.end());
+    }
+}
+
+bool PhotonMapReader::ReadBatch(std::size_t maxPhotons, std::vector<float>& rows) {
+    if (eof_) return false;
+    const std::size_t before = rows.size();
+    std::vector<char> chunk;
+    while (!eof_ && (ncomps_ == 0 || (rows.size() - before) / (kFirstColour + ncomps_) <
+                                         std::max<std::size_t>(maxPhotons, 1))) {
+        chunk.assign(carry_.begin(), carry_.end());
+        const std::size_t old = chunk.size();
+        chunk.resize(old + kChunkBytes);
+        const std::size_t got = std::fread(chunk.data() + old, 1, kChunkBytes, file_);
+        chunk.resize(old + got);
+        if (got < kChunkBytes) {
+            if (std::ferror(file_)) throw PhotonMapIoError(path_ + ": read error");
+            eof_ = true;
+        }
+        const char* begin = chunk.data();
+        const char* end = begin + chunk.size();
+        const char* cut = end;
+        if (!eof_) {
+            while (cut > begin && cut[-1] != '\n') --cut;
+            if (cut == begin) throw PhotonMapError(path_ + ": a line longer than 8 MB");
+        }
+        carry_.assign(cut, end);
+        ParsePieces(begin, cut, rows);
+    }
+    if (eof_ && photonsRead_ != header_.count) {
+        throw PhotonMapError(path_ + ": truncated: the first line announces " +
+                             std::to_string(header_.count) + " photons, the file holds " +
+                             std::to_string(photonsRead_));
+    }
+    return rows.size() > before || !eof_;
+}
+
+PhotonMap ReadPhotonMap(const std::string& path) {
+    PhotonMapReader reader(path);
+    PhotonMap map;
+    map.paths = reader.Header().paths;
+    while (reader.ReadBatch(1 << 20, map.rows)) {
+        if (map.rows.capacity() == map.rows.size() && reader.NumComponents() > 0) {
+            map.rows.reserve(reader.Header().count * (kFirstColour + reader.NumComponents()));
+        }
+    }
+    map.ncomps = reader.NumComponents();
+    return map;
+}
+
+PhotonMapHeader ReadPhotonMapHeader(const std::string& path) {
+    return PhotonMapReader(path).Header();
+}
+
+PhotonMapWriter::PhotonMapWriter(const std::string& path, const PhotonMapHeader& header,
+                                 int ncomps)
+    : path_(path),
+      tempPath_(path + ".tmp." + std::to_string(::getpid())),
+      header_(header),
+      ncomps_(ncomps) {
+    if (ncomps < 1) throw PhotonMapError(path + ": a photon needs at least one colour value");
+    file_ = std::fopen(tempPath_.c_str(), "wb");
+    if (!file_) throw PhotonMapIoError(tempPath_ + ": cannot write: " + std::strerror(errno));
+    std::string first = std::to_string(header.count);
+    if (header.paths != header.count) first += " " + std::to_string(header.paths);
+    first += "\n";
+    buffer_.assign(first.begin(), first.end());
+}
+
+PhotonMapWriter::~PhotonMapWriter() {
+    if (file_) {
+        std::fclose(file_);
+        std::remove(tempPath_.c_str());
+    }
+}
+
+void PhotonMapWriter::Append(const float* row) {
+    char text[32];
+    const int stride = kFirstColour + ncomps_;
+    for (int i = 0; i < stride; ++i) {
+        const auto result = std::to_chars(text, text + sizeof text, row[i]);
+        buffer_.insert(buffer_.end(), text, result.ptr);
+        buffer_.push_back(i + 1 < stride ? ' ' : '\n');
+    }
+    ++written_;
+    if (buffer_.size() > (1 << 20)) {
+        if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
+            throw PhotonMapIoError(tempPath_ + ": write error");
+        }
+        buffer_.clear();
+    }
+}
+
+void PhotonMapWriter::Close() {
+    if (written_ != header_.count) {
+        throw PhotonMapError(path_ + ": wrote " + std::to_string(written_) +
+                             " photons, announced " + std::to_string(header_.count));
+    }
+    const bool ok = std::fwrite(buffer_.data(), 1, buffer_.size(), file_) == buffer_.size();
+    const bool closed = std::fclose(file_) == 0;
+    file_ = nullptr;
+    if (!ok || !closed || std::rename(tempPath_.c_str(), path_.c_str()) != 0) {
+        std::remove(tempPath_.c_str());
+        throw PhotonMapIoError(path_ + ": cannot write: " + std::strerror(errno));
+    }
+}
+
+void WritePhotonMap(const std::string& path, const PhotonMap& map) {
+    PhotonMapWriter writer(path, {map.Size(), map.paths}, map.ncomps);
+    for (std::size_t i = 0; i < map.Size(); ++i) writer.Append(map.Row(i));
+    writer.Close();
+}
+
+}  // namespace gonio

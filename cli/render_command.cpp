@@ -1,0 +1,88 @@
+// gonio render SCENE.rib [-o OUT] [--threads N] [--seed S] [--progress] [--stats] [--keep-going]
+
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "commands.h"
+#include "render/frame_renderer.h"
+#include "rib/rib_parser.h"
+#include "scene/scene_builder.h"
+
+namespace gonio {
+namespace {
+
+struct RenderOptions {
+    std::string scene;
+    std::string output;
+    int threads = 0;
+    uint64_t seed = 0;
+    bool progress = false;
+    bool stats = false;
+    bool keepGoing = false;
+};
+
+void PrintStats(const Frame& frame, const RenderStats& stats) {
+    std::fprintf(stderr,
+                 "frame %d: %dx%d, %.3f s, %llu camera rays, %llu rays traced, %.2f Mrays/s\n",
+                 frame.number, stats.width, stats.height, stats.seconds,
+                 static_cast<unsigned long long>(stats.cameraRays),
+                 static_cast<unsigned long long>(stats.raysTraced),
+                 stats.seconds > 0 ? stats.raysTraced / stats.seconds * 1e-6 : 0.0);
+}
+
+int RunRender(const RenderOptions& options) {
+    if (options.scene != "-" && !std::filesystem::is_regular_file(options.scene)) {
+        std::fprintf(stderr, "gonio render: cannot open scene file '%s'\n",
+                     options.scene.c_str());
+        return 2;
+    }
+    std::unique_ptr<tbb::global_control> threadLimit;
+    if (options.threads > 0)
+        threadLimit = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, options.threads);
+
+    Diagnostics diagnostics;
+    RenderSettings settings;
+    settings.seed = options.seed;
+    settings.progress = options.progress;
+    settings.outputOverride = options.output;
+    bool outputFailed = false;
+    auto renderFrame = [&](const Frame& frame) {
+        if (diagnostics.ErrorCount() > 0 && !options.keepGoing) {
+            std::fprintf(stderr, "gonio render: frame %d not rendered because of the errors above\n",
+                         frame.number);
+            return;
+        }
+        RenderStats stats;
+        outputFailed |= !RenderFrame(frame, settings, diagnostics, &stats);
+        if (options.stats) PrintStats(frame, stats);
+    };
+    SceneBuilder builder(options.scene, diagnostics, renderFrame);
+    ParseRibFile(options.scene, builder, diagnostics);
+    builder.Finish(FileLoc{std::make_shared<const std::string>(options.scene), 0, 0});
+    if (outputFailed) return 2;
+    return diagnostics.ErrorCount() > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+void AddRenderCommand(CLI::App& app, int* exitCode) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand("render", "Render every frame of a RIB scene");
+    cmd->add_option("scene", options->scene, "RIB file, or - for standard input")->required();
+    cmd->add_option("-o,--output", options->output,
+                    "Write the first Display to this file instead (# becomes the frame number)");
+    cmd->add_option("--threads", options->threads, "Worker threads (default: all cores)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--seed", options->seed, "Seed of the sample pattern (default 0)");
+    cmd->add_flag("--progress", options->progress, "Show a progress line for long renders");
+    cmd->add_flag("--stats", options->stats, "Print time and ray counts per frame");
+    cmd->add_flag("--keep-going", options->keepGoing,
+                  "Render frames even after errors in the scene (the bad requests are skipped)");
+    cmd->callback([options, exitCode] { *exitCode = RunRender(*options); });
+}
+
+}  // namespace gonio

@@ -1,0 +1,151 @@
+#include "geometry/quadric_revolved.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/quadric_roots.h"
+
+namespace gonio::quadric {
+
+double RevolutionQuadric::Residual(const V3d& p) const {
+    const double w = p.z - z0;
+    return lambda * (p.x * p.x + p.y * p.y) - ((alpha * w + beta) * w + gamma);
+}
+
+int RevolutionQuadric::RayRoots(const V3d& o, const V3d& d, double lo, double hi,
+                                double t[2]) const {
+    // Substitute o + t·d into the implicit equation: c2·t² + c1·t + c0 = 0.
+    const double w0 = o.z - z0;
+    const double c2 = lambda * (d.x * d.x + d.y * d.y) - alpha * d.z * d.z;
+    const double c1 =
+        2 * lambda * (o.x * d.x + o.y * d.y) - 2 * alpha * w0 * d.z - beta * d.z;
+    const double c0 = lambda * (o.x * o.x + o.y * o.y) - (alpha * w0 + beta) * w0 - gamma;
+    double all[2];
+    const int n = SolveQuadratic(c2, c1, c0, all);
+    int kept = 0;
+    for (int i = 0; i < n; ++i)
+        if (all[i] > lo && all[i] < hi) t[kept++] = all[i];
+    return kept;
+}
+
+namespace {
+
+void Include(Box3f& box, double x, double y, double z) {
+    box.extendBy(V3f(float(x), float(y), float(z)));
+}
+
+// The xy extent of the arc that the point q sweeps through the angles [0, sweep] (signed):
+// its two ends and every axis crossing between them.
+void IncludeArc(const V2d& q, double sweep, bool full, double zlo, double zhi, Box3f& box) {
+    const double rho = std::hypot(q.x, q.y);
+    if (full) {
+        Include(box, -rho, -rho, zlo);
+        Include(box, rho, rho, zhi);
+        return;
+    }
+    const double start = std::atan2(q.y, q.x);
+    const double a = std::min(start, start + sweep), b = std::max(start, start + sweep);
+    for (double angle : {a, b}) {
+        Include(box, rho * std::cos(angle), rho * std::sin(angle), zlo);
+        Include(box, rho * std::cos(angle), rho * std::sin(angle), zhi);
+    }
+    static const double kAxisX[4] = {1, 0, -1, 0}, kAxisY[4] = {0, 1, 0, -1};
+    for (double k = std::ceil(a / (kPi / 2)); k <= std::floor(b / (kPi / 2)); ++k) {
+        const int quadrant = ((int(k) % 4) + 4) % 4;
+        Include(box, rho * kAxisX[quadrant], rho * kAxisY[quadrant], zlo);
+        Include(box, rho * kAxisX[quadrant], rho * kAxisY[quadrant], zhi);
+    }
+}
+
+}  // namespace
+
+RevolvedQuadric::RevolvedQuadric(double thetamaxDegrees)
+    : thetaMax_(Radians(thetamaxDegrees)), fullSweep_(std::fabs(thetamaxDegrees) >= 360) {
+    if (thetamaxDegrees == 0) degenerate_ = true;
+}
+
+void RevolvedQuadric::SetDegenerate() { degenerate_ = true; }
+
+void RevolvedQuadric::SetExtent(const std::vector<V2d>& extremes, double zlo, double zhi) {
+    Box3f box;
+    for (const V2d& q : extremes) IncludeArc(q, thetaMax_, fullSweep_, zlo, zhi, box);
+    // Pad by a few float ulps of the largest coordinate: Evaluate and Intersect round their
+    // double results to float independently of the box.
+    const float scale = std::max({std::fabs(box.min.x), std::fabs(box.min.y),
+                                  std::fabs(box.min.z), std::fabs(box.max.x),
+                                  std::fabs(box.max.y), std::fabs(box.max.z), 1e-30f});
+    const V3f pad(scale * 1e-6f);
+    bounds_ = Box3f(box.min - pad, box.max + pad);
+    center_ = V3d(0.5 * (double(box.min.x) + box.max.x), 0.5 * (double(box.min.y) + box.max.y),
+                  0.5 * (double(box.min.z) + box.max.z));
+}
+
+bool RevolvedQuadric::ThetaParameter(const V3d& p, const V3d& profilePoint, double* u) const {
+    const double psi = std::atan2(p.y, p.x);
+    const double alpha = std::atan2(profilePoint.y, profilePoint.x);
+    // How far the sweep has turned to carry the profile point onto p, in the sweep's sense.
+    double theta = thetaMax_ >= 0 ? psi - alpha : alpha - psi;
+    if (theta < 0) theta += 2 * kPi;
+    if (theta >= 2 * kPi) theta -= 2 * kPi;
+    const double sweep = std::fabs(thetaMax_);
+    if (!fullSweep_ && theta > sweep) return false;
+    *u = std::min(theta / sweep, 1.0);
+    return true;
+}
+
+bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, float tmax,
+                                QuadricHit* hit) const {
+    if (degenerate_) return false;
+    const V3d d(dir.x, dir.y, dir.z);
+    const double dd = d.dot(d);
+    if (!(dd > 0) || !std::isfinite(dd)) return false;
+    // Solve from the point of the ray nearest the shape's centre: the polynomial coefficients
+    // then scale with the shape's size, not with the distance of the ray origin, and do not
+    // cancel (a ray from 1e3 units away hits a unit sphere as accurately as one from nearby).
+    const V3d o(org.x, org.y, org.z);
+    const double t0 = (center_ - o).dot(d) / dd;
+    const V3d origin = o + t0 * d;
+    double roots[4];
+    const int n = RayRoots(origin, d, double(tmin) - t0, double(tmax) - t0, roots);
+    for (int i = 0; i < n; ++i) {
+        const double t = t0 + roots[i];
+        if (!(t > tmin && t < tmax)) continue;
+        const V3d p = origin + roots[i] * d;
+        double vs[2];
+        const int candidates = ProfileParameters(p, vs);
+        for (int j = 0; j < candidates; ++j) {
+            double u;
+            if (!ThetaParameter(p, Profile(vs[j]).L, &u)) continue;
+            hit->t = float(t);
+            hit->u = float(u);
+            hit->v = float(vs[j]);
+            return true;
+        }
+    }
+    return false;
+}
+
+SurfaceGeometry RevolvedQuadric::Evaluate(float u, float v) const {
+    const ProfilePoint profile = Profile(v);
+    const double theta = u * thetaMax_;
+    const double c = std::cos(theta), s = std::sin(theta);
+    auto rotate = [c, s](const V3d& a) { return V3d(c * a.x - s * a.y, s * a.x + c * a.y, a.z); };
+    const V3d p = rotate(profile.L);
+    const V3d dPdu = thetaMax_ * V3d(-p.y, p.x, 0);
+    const V3d dPdv = rotate(profile.dLdv);
+    // cross(dPdu, dPdv) = thetamax · Rz(θ)·profile.normal (up to a positive factor).
+    V3d n = SignOf(thetaMax_) * rotate(profile.normal);
+    const double length = n.length();
+    n = length > 0 && std::isfinite(length) ? n / length : V3d(0, 0, 1);
+
+    SurfaceGeometry g;
+    g.P = V3f(p);
+    g.dPdu = V3f(dPdu);
+    g.dPdv = V3f(dPdv);
+    g.Ng = V3f(n);
+    g.u = u;
+    g.v = v;
+    return g;
+}
+
+}  // namespace gonio::quadric

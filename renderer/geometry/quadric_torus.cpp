@@ -1,0 +1,143 @@
+// The torus: the one quartic among the RISpec quadrics.
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/quadric_revolved.h"
+#include "geometry/quadric_roots.h"
+#include "geometry/quadrics.h"
+
+namespace gonio {
+namespace quadric {
+namespace {
+
+// The extremes of cos and sin over the angles [lo, hi].
+void CosSinRange(double lo, double hi, V2d* cosRange, V2d* sinRange) {
+    if (hi - lo >= 2 * kPi) {
+        *cosRange = *sinRange = V2d(-1, 1);
+        return;
+    }
+    *cosRange = V2d(std::min(std::cos(lo), std::cos(hi)), std::max(std::cos(lo), std::cos(hi)));
+    *sinRange = V2d(std::min(std::sin(lo), std::sin(hi)), std::max(std::sin(lo), std::sin(hi)));
+    for (double k = std::ceil(lo / (kPi / 2)); k <= std::floor(hi / (kPi / 2)); ++k) {
+        switch (((int(k) % 4) + 4) % 4) {
+            case 0: cosRange->y = 1; break;
+            case 1: sinRange->y = 1; break;
+            case 2: cosRange->x = -1; break;
+            case 3: sinRange->x = -1; break;
+        }
+    }
+}
+
+class Torus final : public RevolvedQuadric {
+public:
+    Torus(double majorRadius, double minorRadius, double phimin, double phimax, double thetamax)
+        : RevolvedQuadric(thetamax),
+          major_(majorRadius),
+          minor_(minorRadius),
+          phiMin_(Radians(phimin)),
+          phiMax_(Radians(phimax)),
+          fullTube_(std::fabs(phimax - phimin) >= 360) {
+        if (minorRadius == 0 || phimin == phimax) SetDegenerate();
+        V2d cosRange, sinRange;
+        CosSinRange(std::min(phiMin_, phiMax_), std::max(phiMin_, phiMax_), &cosRange,
+                    &sinRange);
+        // For a fixed θ a point's coordinates are linear in the profile's x, so the profile's
+        // extreme x values bound the whole sweep.
+        const double x0 = major_ + minor_ * cosRange.x, x1 = major_ + minor_ * cosRange.y;
+        const double z0 = minor_ * sinRange.x, z1 = minor_ * sinRange.y;
+        SetExtent({V2d(x0, 0), V2d(x1, 0)}, std::min(z0, z1), std::max(z0, z1));
+    }
+
+protected:
+    ProfilePoint Profile(double v) const override {
+        const double dphi = phiMax_ - phiMin_;
+        const double phi = phiMin_ + v * dphi;
+        const double c = std::cos(phi), s = std::sin(phi);
+        // cross((-L.y, L.x, 0), dLdv) = (φmax − φmin)·r·(R + r·cos φ)·(cos φ, 0, sin φ).
+        const double axisDistance = major_ + minor_ * c;
+        double side = axisDistance;
+        if (std::fabs(axisDistance) <= 1e-12 * (std::fabs(major_) + std::fabs(minor_))) {
+            // On the axis (a spindle torus): the limit from the side of v we come from.
+            side = -minor_ * s * dphi * (v < 1 ? 1.0 : -1.0);
+        }
+        return {V3d(axisDistance, 0, minor_ * s), dphi * minor_ * V3d(-s, 0, c),
+                SignOf(dphi * minor_ * side) * V3d(c, 0, s)};
+    }
+
+    int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const override {
+        if (major_ == 0) {
+            // A sphere swept twice: the quartic would be a square with only double roots.
+            return RevolutionQuadric{1, -1, 0, minor_ * minor_, 0}.RayRoots(o, d, lo, hi, t);
+        }
+        // Work in distances τ along the unit direction e from the ray's point nearest the
+        // torus centre p: the quartic's coefficients are then of the torus's own size.
+        const double speed = d.length();
+        const V3d e = d / speed;
+        const double nearest = -o.dot(e);
+        const V3d p = o + nearest * e;
+        const double pp = p.dot(p);
+        const double bound = std::fabs(major_) + std::fabs(minor_);
+        if (pp > bound * bound) return 0;
+        const double halfChord = std::sqrt(bound * bound - pp) + 1e-9 * bound;
+        const double tauLo = std::max(lo * speed - nearest, -halfChord);
+        const double tauHi = std::min(hi * speed - nearest, halfChord);
+        if (!(tauLo < tauHi)) return 0;
+
+        // (|P|² + R² − r²)² = 4R²·(x² + y²) with P = p + τ·e.
+        const double k = major_ * major_ - minor_ * minor_, fourR2 = 4 * major_ * major_;
+        const double ee = e.dot(e), pe = p.dot(e);
+        const double exy = e.x * e.x + e.y * e.y, pexy = p.x * e.x + p.y * e.y;
+        const double pxy = p.x * p.x + p.y * p.y, g0 = pp + k;
+        const double c[5] = {g0 * g0 - fourR2 * pxy, 4 * pe * g0 - 2 * fourR2 * pexy,
+                             2 * ee * g0 + 4 * pe * pe - fourR2 * exy, 4 * ee * pe, ee * ee};
+        const int n = PolynomialRootsIn(c, 4, tauLo, tauHi, t);
+        for (int i = 0; i < n; ++i) t[i] = (t[i] + nearest) / speed;
+        return n;
+    }
+
+    int ProfileParameters(const V3d& p, double v[2]) const override {
+        // The point lies on the tube circle centred at signed distance +R from the axis in its
+        // own half plane (θ = ψ), or, for a spindle torus, at −R (θ = ψ + π). Try the nearer.
+        const double rho = std::hypot(p.x, p.y);
+        const double offAxis[2] = {rho, -rho};
+        double miss[2];
+        for (int i = 0; i < 2; ++i)
+            miss[i] = std::fabs(std::hypot(offAxis[i] - major_, p.z) - std::fabs(minor_));
+        const int first = miss[1] < miss[0] ? 1 : 0;
+        const double tolerance = miss[first] + 1e-7 * (std::fabs(major_) + std::fabs(minor_));
+        int n = 0;
+        for (int i : {first, 1 - first}) {
+            if (miss[i] > tolerance) continue;
+            const double phi = std::atan2(p.z / minor_, (offAxis[i] - major_) / minor_);
+            if (TubeParameter(phi, &v[n])) ++n;
+        }
+        return n;
+    }
+
+private:
+    // v for the tube angle phi (any turn), if phi lies in the swept φ range.
+    bool TubeParameter(double phi, double* v) const {
+        const double dphi = phiMax_ - phiMin_;
+        double turned = std::fmod(dphi >= 0 ? phi - phiMin_ : phiMin_ - phi, 2 * kPi);
+        if (turned < 0) turned += 2 * kPi;
+        if (!fullTube_ && turned > std::fabs(dphi)) return false;
+        *v = std::min(turned / std::fabs(dphi), 1.0);
+        return true;
+    }
+
+    double major_, minor_, phiMin_, phiMax_;
+    bool fullTube_;
+};
+
+}  // namespace
+}  // namespace quadric
+
+std::unique_ptr<Quadric> MakeTorus(float majorRadius, float minorRadius, float phimin,
+                                   float phimax, float thetamax) {
+    const bool finite = std::isfinite(majorRadius) && std::isfinite(minorRadius) &&
+                        std::isfinite(phimin) && std::isfinite(phimax) && std::isfinite(thetamax);
+    if (!finite) majorRadius = minorRadius = phimin = phimax = thetamax = 0;
+    return std::make_unique<quadric::Torus>(majorRadius, minorRadius, phimin, phimax, thetamax);
+}
+
+}  // namespace gonio

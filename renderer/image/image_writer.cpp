@@ -1,0 +1,385 @@
+// The one file of the renderer that includes OpenImageIO (STYLE.md habit 3).
+#include "image/image_writer.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace gonio {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class ChannelKind { Colour, Alpha, Depth, Aov };
+
+struct OutputChannel {
+    int source;  // index into the image's channels
+    ChannelKind kind;
+    std::string name;  // as written to the file
+};
+
+std::string Lowercase(std::string text) {
+    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+// The name of a parameter whose token may carry an inline declaration ("string compression").
+std::string ParamName(const std::string& token) {
+    size_t space = token.find_last_of(" \t");
+    return space == std::string::npos ? token : token.substr(space + 1);
+}
+
+const Param* FindParam(const ParamList& params, const std::string& name) {
+    for (const Param& p : params)
+        if (ParamName(p.token) == name) return &p;
+    return nullptr;
+}
+
+// OpenImageIO's format for a file extension, from its own "extension_list".
+std::string FormatForExtension(const std::string& extension) {
+    static const std::map<std::string, std::string> formats = [] {
+        std::map<std::string, std::string> result;
+        std::string list = OIIO::get_string_attribute("extension_list");
+        size_t start = 0;
+        while (start < list.size()) {
+            size_t end = list.find(';', start);
+            if (end == std::string::npos) end = list.size();
+            std::string entry = list.substr(start, end - start);
+            size_t colon = entry.find(':');
+            if (colon != std::string::npos) {
+                std::string format = entry.substr(0, colon);
+                size_t e = colon + 1;
+                while (e < entry.size()) {
+                    size_t comma = entry.find(',', e);
+                    if (comma == std::string::npos) comma = entry.size();
+                    result.emplace(entry.substr(e, comma - e), format);
+                    e = comma + 1;
+                }
+            }
+            start = end + 1;
+        }
+        return result;
+    }();
+    auto found = formats.find(Lowercase(extension));
+    return found == formats.end() ? std::string() : found->second;
+}
+
+// The OpenImageIO format a Display writes; see image_writer.h for the rules.
+std::string ChooseFormat(const DisplaySpec& display, Diagnostics& diagnostics) {
+    std::string type = Lowercase(display.type);
+    std::string extension = fs::path(display.name).extension().string();
+    if (!extension.empty()) extension.erase(0, 1);
+    std::string byExtension = FormatForExtension(extension);
+    if (type == "openexr" || type == "exr") return "openexr";
+    if (type == "png") return "png";
+    if (type == "framebuffer" || type == "zframebuffer")
+        diagnostics.NoteOnce("display-framebuffer", display.loc,
+                             "Display type \"" + display.type +
+                                 "\": gonio has no window to show images in; writing the file \"" +
+                                 display.name + "\" instead");
+    if (type == "file" || type == "tiff" || type == "framebuffer" || type == "zframebuffer" ||
+        type == "zfile" || type == "shadow")
+        return byExtension.empty() ? "tiff" : byExtension;
+    diagnostics.WarningOnce(
+        "display-type-" + type, display.loc,
+        "unknown Display type \"" + display.type + "\"; writing " +
+            (byExtension.empty() ? std::string("TIFF")
+                                 : "the format of the extension ." + extension));
+    return byExtension.empty() ? "tiff" : byExtension;
+}
+
+// Formats whose OpenImageIO writer keeps float pixels (others convert them to 8 bit).
+bool FormatHoldsFloat(const std::string& format, const std::string& fileName) {
+    static const std::set<std::string> kFloatFormats = {"openexr", "tiff", "hdr", "fits", "zfile"};
+    if (format == "pnm") return Lowercase(fs::path(fileName).extension().string()) == ".pfm";
+    return kFloatFormats.count(format) > 0;
+}
+
+bool IsStandardMode(const std::string& mode) {
+    static const std::set<std::string> kModes = {"rgb", "rgba", "rgbz", "rgbaz", "a", "z", "az"};
+    return kModes.count(mode) > 0;
+}
+
+int FindChannel(const std::vector<std::string>& names, const std::string& name) {
+    auto found = std::find(names.begin(), names.end(), name);
+    return found == names.end() ? -1 : int(found - names.begin());
+}
+
+std::vector<OutputChannel> SelectOutputChannels(const std::string& mode,
+                                                const std::vector<std::string>& names,
+                                                std::string& error) {
+    std::vector<OutputChannel> channels;
+    if (IsStandardMode(mode)) {
+        for (char letter : mode) {
+            if (letter == 'g' || letter == 'b') continue;  // taken with 'r'
+            std::vector<std::pair<std::string, ChannelKind>> wanted;
+            if (letter == 'r')
+                wanted = {{"r", ChannelKind::Colour},
+                          {"g", ChannelKind::Colour},
+                          {"b", ChannelKind::Colour}};
+            else if (letter == 'a')
+                wanted = {{"a", ChannelKind::Alpha}};
+            else
+                wanted = {{"z", ChannelKind::Depth}};
+            for (const auto& [name, kind] : wanted) {
+                int source = FindChannel(names, name);
+                if (source < 0) {
+                    error = "Display mode \"" + mode + "\" needs the channel \"" + name +
+                            "\", which the renderer did not produce";
+                    return {};
+                }
+                channels.push_back({source, kind, std::string(1, char(std::toupper(name[0])))});
+            }
+        }
+        return channels;
+    }
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == mode || names[i].rfind(mode + ".", 0) == 0)
+            channels.push_back({int(i), ChannelKind::Aov, names[i]});
+    if (channels.empty())
+        error = "Display mode \"" + mode +
+                "\" is neither rgb, rgba, rgbz, rgbaz, a, z, az nor an output the renderer "
+                "produced";
+    return channels;
+}
+
+// A well-mixed 32-bit hash (the finaliser of MurmurHash3) of a pixel and channel, so that the
+// dither of a pixel is fixed whatever the thread count or write order.
+uint32_t HashPixel(int x, int y, int channel) {
+    uint32_t h =
+        uint32_t(x) * 0x9E3779B1u ^ uint32_t(y) * 0x85EBCA77u ^ uint32_t(channel) * 0xC2B2AE3Du;
+    h ^= h >> 16;
+    h *= 0x85EBCA6Bu;
+    h ^= h >> 13;
+    h *= 0xC2B2AE35u;
+    h ^= h >> 16;
+    return h;
+}
+
+struct PixelData {
+    OIIO::TypeDesc format;  // of `bytes`
+    std::vector<unsigned char> bytes;
+};
+
+// Quantize ranges may reach below 0 or above the type (RISpec's example is -1024..3071); the
+// file's unsigned type clamps them.
+template <typename T>
+void StoreCodes(const std::vector<float>& codes, float largest, std::vector<unsigned char>& bytes) {
+    bytes.resize(codes.size() * sizeof(T));
+    T* out = reinterpret_cast<T*>(bytes.data());
+    for (size_t i = 0; i < codes.size(); ++i)
+        out[i] = T(std::min(std::max(codes[i], 0.0f), largest));
+}
+
+// Whether the integer codes of `channels` need 16 bits.
+bool NeedsSixteenBits(const std::vector<OutputChannel>& channels, const Quantization& colour,
+                      const Quantization& depth) {
+    for (const OutputChannel& channel : channels) {
+        const Quantization& q = channel.kind == ChannelKind::Depth ? depth : colour;
+        if (std::max(q.one, q.max) > 255) return true;
+    }
+    return false;
+}
+
+// Runs the imaging pipeline on every output value: a float file gets exposed colour, an integer
+// file the quantized codes.
+PixelData ComputePixels(const Image& image, const std::vector<OutputChannel>& channels,
+                        const Exposure& exposure, const Quantization& colour,
+                        const Quantization& depth, bool writeFloat) {
+    const int n = int(channels.size());
+    std::vector<float> values(size_t(image.width) * image.height * n);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float* in = image.At(x, y);
+            float* out = &values[(size_t(y) * image.width + x) * n];
+            for (int c = 0; c < n; ++c) {
+                const OutputChannel& channel = channels[c];
+                float v = in[channel.source];
+                if (channel.kind == ChannelKind::Colour) v = ApplyExposure(v, exposure);
+                if (!writeFloat) {
+                    const Quantization& q = channel.kind == ChannelKind::Depth ? depth : colour;
+                    v = float(QuantizeValue(v, q, image.xorigin + x, image.yorigin + y, c));
+                }
+                out[c] = v;
+            }
+        }
+    }
+    PixelData data;
+    if (writeFloat) {
+        data.format = OIIO::TypeDesc::FLOAT;  // OpenImageIO converts to half where asked
+        data.bytes.resize(values.size() * sizeof(float));
+        std::copy(values.begin(), values.end(), reinterpret_cast<float*>(data.bytes.data()));
+    } else if (NeedsSixteenBits(channels, colour, depth)) {
+        data.format = OIIO::TypeDesc::UINT16;
+        StoreCodes<uint16_t>(values, 65535.0f, data.bytes);
+    } else {
+        data.format = OIIO::TypeDesc::UINT8;
+        StoreCodes<uint8_t>(values, 255.0f, data.bytes);
+    }
+    return data;
+}
+
+std::string TemporaryName(const std::string& name) {
+    fs::path path(name);
+    std::string temporary = "." + path.filename().string() + ".tmp" + std::to_string(getpid());
+    return (path.parent_path() / temporary).string();
+}
+
+// How the pixels are stored: float (half on request in OpenEXR) or integer codes.
+struct PixelType {
+    bool isFloat = false;
+    bool half = false;
+    Quantization colour, depth;
+};
+
+PixelType ChoosePixelType(const DisplaySpec& display, const std::string& format,
+                          const std::vector<OutputChannel>& channels, const Quantization& colour,
+                          const Quantization& depth, Diagnostics& diagnostics) {
+    PixelType type;
+    type.colour = colour;
+    type.depth = depth;
+    bool wantFloat = format == "openexr";
+    for (const OutputChannel& channel : channels) {
+        const Quantization& q = channel.kind == ChannelKind::Depth ? depth : colour;
+        if (channel.kind == ChannelKind::Aov || q.IsFloat()) wantFloat = true;
+    }
+    type.isFloat = wantFloat;
+    if (wantFloat && !FormatHoldsFloat(format, display.name)) {
+        diagnostics.WarningOnce("display-float-" + format, display.loc,
+                                "the " + format + " format cannot hold float pixels; writing \"" +
+                                    display.name + "\" with integer pixels instead");
+        type.isFloat = false;
+        type.colour = type.depth = Quantization{65535, 0, 65535, 0.5f};
+    }
+    const Param* pixelType = FindParam(display.params, "exrpixeltype");
+    type.half = type.isFloat && format == "openexr" && pixelType && pixelType->isString &&
+                !pixelType->strings.empty() && pixelType->strings[0] == "half";
+    return type;
+}
+
+void WarnAboutUnusedParams(const ParamList& params, Diagnostics& diagnostics) {
+    for (const Param& p : params) {
+        std::string name = ParamName(p.token);
+        if (name != "compression" && name != "exrpixeltype" && name != "origin")
+            diagnostics.WarningOnce("display-param-" + name, p.loc,
+                                    "Display parameter \"" + name + "\" is not used");
+    }
+}
+
+OIIO::ImageSpec MakeImageSpec(const Image& image, const std::vector<OutputChannel>& channels,
+                              OIIO::TypeDesc fileFormat, const ParamList& params) {
+    OIIO::ImageSpec spec(image.width, image.height, int(channels.size()), fileFormat);
+    // Data window: the crop window where it lies in the frame; display window: the frame.
+    spec.x = image.xorigin;
+    spec.y = image.yorigin;
+    spec.full_x = 0;
+    spec.full_y = 0;
+    spec.full_width = image.fullWidth > 0 ? image.fullWidth : image.width;
+    spec.full_height = image.fullHeight > 0 ? image.fullHeight : image.height;
+    spec.channelnames.clear();
+    for (size_t c = 0; c < channels.size(); ++c) {
+        spec.channelnames.push_back(channels[c].name);
+        if (channels[c].kind == ChannelKind::Alpha) spec.alpha_channel = int(c);
+        if (channels[c].kind == ChannelKind::Depth) spec.z_channel = int(c);
+    }
+    const Param* compression = FindParam(params, "compression");
+    if (compression && compression->isString && !compression->strings.empty())
+        spec.attribute("compression", compression->strings[0]);
+    spec.attribute("Software", "gonio");
+    return spec;
+}
+
+// Writes under a temporary name in the same folder, then renames, so that readers never see a
+// partial file and a failure leaves nothing. Returns the reason on failure, "" on success.
+std::string WriteAtomically(const std::string& format, const std::string& name,
+                            const OIIO::ImageSpec& spec, const PixelData& data) {
+    fs::path folder = fs::path(name).parent_path();
+    std::error_code statError;
+    if (!folder.empty() && !fs::is_directory(folder, statError))
+        return "the folder \"" + folder.string() + "\" does not exist";
+    auto out = OIIO::ImageOutput::create(format);
+    if (!out) return "OpenImageIO has no writer for " + format + ": " + OIIO::geterror();
+    const std::string temporary = TemporaryName(name);
+    std::string error;
+    if (!out->open(temporary, spec)) {
+        error = out->geterror();
+    } else {
+        if (!out->write_image(data.format, data.bytes.data())) error = out->geterror();
+        if (!out->close() && error.empty()) error = out->geterror();
+    }
+    if (error.empty()) {
+        std::error_code renameError;
+        fs::rename(temporary, name, renameError);
+        if (!renameError) return "";
+        error = renameError.message();
+    }
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    if (error.empty()) return "the image writer failed without saying why";
+    // OpenImageIO names the file it was given; the user knows only the real name.
+    for (size_t at = error.find(temporary); at != std::string::npos; at = error.find(temporary))
+        error.replace(at, temporary.size(), name);
+    return error;
+}
+
+}  // namespace
+
+std::vector<int> SelectDisplayChannels(const std::string& mode,
+                                       const std::vector<std::string>& channelNames,
+                                       std::string& error) {
+    std::vector<int> indices;
+    for (const OutputChannel& channel : SelectOutputChannels(mode, channelNames, error))
+        indices.push_back(channel.source);
+    return indices;
+}
+
+float ApplyExposure(float value, const Exposure& exposure) {
+    // RISpec §4.1.3 (RiExposure): colour' = (colour * gain) ^ (1 / gamma).
+    float exposed = value * exposure.gain;
+    if (exposure.gamma == 1.0f || !(exposure.gamma > 0.0f) || !(exposed > 0.0f)) return exposed;
+    return std::pow(exposed, 1.0f / exposure.gamma);
+}
+
+int QuantizeValue(float value, const Quantization& q, int x, int y, int channel) {
+    // RISpec §4.1.3 (RiQuantize): round(one * value + ditheramplitude * random()), random() in
+    // [-1, 1], then clamp to [min, max]. Clamping before rounding keeps infinities in range.
+    double random = HashPixel(x, y, channel) * (2.0 / 4294967296.0) - 1.0;
+    double v = std::isnan(value) ? 0.0 : double(q.one) * value + q.dither * random;
+    v = std::min(std::max(v, double(q.min)), double(q.max));
+    return int(std::lround(v));
+}
+
+bool WriteDisplay(const DisplaySpec& display, const Image& image,
+                  const std::vector<std::string>& channelNames, const Exposure& exposure,
+                  const Quantization& colour, const Quantization& depth, Diagnostics& diagnostics) {
+    auto fail = [&](const std::string& why) {
+        diagnostics.Error(display.loc, "cannot write image \"" + display.name + "\": " + why);
+        return false;
+    };
+    if (int(channelNames.size()) != image.channels)
+        return fail(std::to_string(channelNames.size()) + " channel names for an image of " +
+                    std::to_string(image.channels) + " channels");
+    std::string error;
+    std::vector<OutputChannel> channels = SelectOutputChannels(display.mode, channelNames, error);
+    if (channels.empty()) return fail(error);
+
+    const std::string format = ChooseFormat(display, diagnostics);
+    PixelType type = ChoosePixelType(display, format, channels, colour, depth, diagnostics);
+    WarnAboutUnusedParams(display.params, diagnostics);
+    PixelData data =
+        ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
+    OIIO::TypeDesc fileFormat = type.half ? OIIO::TypeDesc::HALF : data.format;
+    error = WriteAtomically(format, display.name,
+                            MakeImageSpec(image, channels, fileFormat, display.params), data);
+    return error.empty() || fail(error);
+}
+
+}  // namespace gonio

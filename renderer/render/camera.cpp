@@ -1,0 +1,78 @@
+#include "render/camera.h"
+
+#include <cmath>
+
+namespace gonio {
+namespace {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// Shirley and Chiu's concentric map from the unit square to the unit disk: it keeps the
+// stratification of the lens samples.
+Imath::V2f ConcentricDisk(float u, float v) {
+    const float a = 2 * u - 1, b = 2 * v - 1;
+    if (a == 0 && b == 0) return {0, 0};
+    float r, phi;
+    if (std::fabs(a) > std::fabs(b)) {
+        r = a;
+        phi = kPi / 4 * (b / a);
+    } else {
+        r = b;
+        phi = kPi / 2 - kPi / 4 * (a / b);
+    }
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+}  // namespace
+
+Camera::Camera(const Options& options)
+    : worldFromCamera_(options.cameraFromWorld.inverse()),
+      perspective_(options.projection == "perspective"),
+      tanHalfFov_(std::tan(options.fov * kPi / 360.f)),
+      xres_(options.xres),
+      yres_(options.yres),
+      nearClip_(options.nearClip),
+      farClip_(options.farClip) {
+    // RISpec §4.1.1: the default screen window spans [-1,1] along the frame's shorter side.
+    const float aspect = options.frameAspect > 0
+                             ? options.frameAspect
+                             : options.xres * options.pixelAspect / float(options.yres);
+    if (options.screenWindowSet) {
+        for (int i = 0; i < 4; ++i) screen_[i] = options.screenWindow[i];
+    } else if (aspect >= 1) {
+        screen_[0] = -aspect, screen_[1] = aspect, screen_[2] = -1, screen_[3] = 1;
+    } else {
+        screen_[0] = -1, screen_[1] = 1, screen_[2] = -1 / aspect, screen_[3] = 1 / aspect;
+    }
+    if (perspective_ && std::isfinite(options.fstop) && options.fstop > 0 &&
+        options.focalLength > 0 && options.focalDistance > 0) {
+        lensRadius_ = 0.5f * options.focalLength / options.fstop;
+        focalDistance_ = options.focalDistance;
+    }
+}
+
+CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float lensV) const {
+    const float sx = screen_[0] + rasterX / xres_ * (screen_[1] - screen_[0]);
+    const float sy = screen_[3] - rasterY / yres_ * (screen_[3] - screen_[2]);
+    Imath::V3f org(0, 0, 0), dir(0, 0, 1);
+    if (perspective_) {
+        dir = Imath::V3f(sx * tanHalfFov_, sy * tanHalfFov_, 1);
+    } else {
+        org = Imath::V3f(sx, sy, 0);
+    }
+    if (lensRadius_ > 0) {
+        // Thin lens: every ray through the lens meets the pinhole ray on the focal plane.
+        const Imath::V3f focus = org + dir * focalDistance_;
+        const Imath::V2f lens = ConcentricDisk(lensU, lensV) * lensRadius_;
+        org = Imath::V3f(lens.x, lens.y, 0);
+        dir = (focus - org) / focalDistance_;
+    }
+    CameraRay ray;
+    worldFromCamera_.multVecMatrix(org, ray.org);
+    worldFromCamera_.multDirMatrix(dir, ray.dir);
+    ray.tnear = nearClip_;
+    ray.tfar = farClip_;
+    return ray;
+}
+
+}  // namespace gonio

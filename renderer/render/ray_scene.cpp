@@ -1,0 +1,484 @@
+// The one file that includes Embree (STYLE.md habit 3).
+
+#include "render/ray_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "render/shape_evaluation.h"
+
+namespace gonio {
+namespace {
+
+using Imath::M44f;
+using Imath::V3f;
+
+V3f TransformPoint(const M44f& m, const V3f& p) {
+    V3f out;
+    m.multVecMatrix(p, out);
+    return out;
+}
+
+V3f TransformVector(const M44f& m, const V3f& v) {
+    V3f out;
+    m.multDirMatrix(v, out);
+    return out;
+}
+
+// Normals transform with the inverse transpose; with row vectors that is n·(M⁻¹)ᵀ.
+V3f TransformNormal(const M44f& objectFromSpace, const V3f& n) {
+    V3f out;
+    objectFromSpace.transposed().multDirMatrix(n, out);
+    return out;
+}
+
+V3f Normalized(const V3f& v) {
+    const float len = v.length();
+    return len > 0 ? v / len : V3f(0, 0, 1);
+}
+
+// Width scales with the cube root of the volume change: exact for similarity transforms.
+float LengthScale(const M44f& m) { return std::cbrt(std::fabs(m.determinant())); }
+
+// A quadric placed in a scene: Embree user geometry calls back into it.
+struct QuadricGeometry {
+    const Quadric* quadric;
+    M44f objectFromSpace;
+    M44f spaceFromObject;
+};
+
+void QuadricBounds(const RTCBoundsFunctionArguments* args) {
+    const auto* q = static_cast<const QuadricGeometry*>(args->geometryUserPtr);
+    const Box3f box = q->quadric->Bounds();
+    Box3f out;
+    for (int i = 0; i < 8; ++i) {
+        const V3f corner((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                         (i & 4) ? box.max.z : box.min.z);
+        out.extendBy(TransformPoint(q->spaceFromObject, corner));
+    }
+    RTCBounds* b = args->bounds_o;
+    b->lower_x = out.min.x, b->lower_y = out.min.y, b->lower_z = out.min.z;
+    b->upper_x = out.max.x, b->upper_y = out.max.y, b->upper_z = out.max.z;
+}
+
+bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, unsigned i,
+                         QuadricHit* hit) {
+    const V3f org(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i),
+                  RTCRayN_org_z(rays, N, i));
+    const V3f dir(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i),
+                  RTCRayN_dir_z(rays, N, i));
+    // An affine map keeps the ray parameter: t is the same in object space.
+    return q->quadric->Intersect(TransformPoint(q->objectFromSpace, org),
+                                 TransformVector(q->objectFromSpace, dir), RTCRayN_tnear(rays, N, i),
+                                 RTCRayN_tfar(rays, N, i), hit);
+}
+
+void QuadricIntersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* q = static_cast<const QuadricGeometry*>(args->geometryUserPtr);
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        QuadricHit hit;
+        if (!IntersectQuadricRay(q, rays, args->N, i, &hit)) continue;
+        RTCRayN_tfar(rays, args->N, i) = hit.t;
+        RTCHitN_u(hits, args->N, i) = hit.u;
+        RTCHitN_v(hits, args->N, i) = hit.v;
+        RTCHitN_Ng_x(hits, args->N, i) = 0;
+        RTCHitN_Ng_y(hits, args->N, i) = 0;
+        RTCHitN_Ng_z(hits, args->N, i) = 1;
+        RTCHitN_primID(hits, args->N, i) = args->primID;
+        RTCHitN_geomID(hits, args->N, i) = args->geomID;
+        RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+    }
+}
+
+void QuadricOccluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* q = static_cast<const QuadricGeometry*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        QuadricHit hit;
+        if (IntersectQuadricRay(q, args->ray, args->N, i, &hit))
+            RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
+    }
+}
+
+void ReportEmbreeError(void* userPtr, RTCError code, const char* message) {
+    auto* diagnostics = static_cast<Diagnostics*>(userPtr);
+    diagnostics->Error(FileLoc{}, "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+                                      (message ? message : ""));
+}
+
+}  // namespace
+
+// What we keep for each Embree geometry, to evaluate its hits.
+struct GeometryRecord {
+    const SceneShape* shape = nullptr;  // null for an instance
+    M44f spaceFromObject, objectFromSpace;
+    PrimVarSet meshVars;  // a TriangleMesh's variables as classes
+    const PrimVarSet* vars = nullptr;
+    std::unique_ptr<QuadricGeometry> quadric;
+    RTCGeometry geometry = nullptr;  // kept for rtcInterpolate on subdivision surfaces
+    int instance = -1;               // index into Impl::instances for instance geometries
+};
+
+struct SceneLevel {
+    RTCScene scene = nullptr;
+    std::vector<std::unique_ptr<GeometryRecord>> records;  // indexed by geomID
+};
+
+struct InstancePlacement {
+    int level;  // index into Impl::definitions
+    M44f worldFromDefinition, definitionFromWorld;
+};
+
+struct RayScene::Impl {
+    Diagnostics& diagnostics;
+    int colorComponents;
+    std::vector<float> defaultCs, defaultOs;
+    RTCDevice device = nullptr;
+    SceneLevel top;
+    std::vector<SceneLevel> definitions;
+    std::vector<InstancePlacement> instances;
+
+    explicit Impl(Diagnostics& d) : diagnostics(d) {}
+    ~Impl() {
+        for (SceneLevel& level : definitions) rtcReleaseScene(level.scene);
+        if (top.scene) rtcReleaseScene(top.scene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    void AddShape(SceneLevel& level, const SceneShape& shape);
+    void Attach(SceneLevel& level, RTCGeometry geometry, std::unique_ptr<GeometryRecord> record);
+    RTCGeometry MakeMesh(const TriangleMesh& mesh, const M44f& m);
+    RTCGeometry MakeQuadric(GeometryRecord& record, const QuadricShape& shape);
+    RTCGeometry MakeSubdivision(const SubdivisionCage& cage, const M44f& m);
+    RTCGeometry MakeCurves(const CurveSet& curves, const M44f& m);
+    RTCGeometry MakePoints(const PointSet& points, const M44f& m);
+    ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit,
+                             const V3f& spaceP) const;
+};
+
+void RayScene::Impl::Attach(SceneLevel& level, RTCGeometry geometry,
+                            std::unique_ptr<GeometryRecord> record) {
+    rtcCommitGeometry(geometry);
+    const unsigned id = rtcAttachGeometry(level.scene, geometry);
+    record->geometry = geometry;
+    if (level.records.size() <= id) level.records.resize(id + 1);
+    level.records[id] = std::move(record);
+    rtcReleaseGeometry(geometry);  // the scene holds it now
+}
+
+RTCGeometry RayScene::Impl::MakeMesh(const TriangleMesh& mesh, const M44f& m) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const V3f p = TransformPoint(m, mesh.positions[i]);
+        v[3 * i] = p.x, v[3 * i + 1] = p.y, v[3 * i + 2] = p.z;
+    }
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.TriangleCount()));
+    std::memcpy(idx, mesh.indices.data(), mesh.indices.size() * sizeof(unsigned));
+    return g;
+}
+
+RTCGeometry RayScene::Impl::MakeQuadric(GeometryRecord& record, const QuadricShape& shape) {
+    record.quadric = std::make_unique<QuadricGeometry>(
+        QuadricGeometry{shape.quadric.get(), record.objectFromSpace, record.spaceFromObject});
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, 1);
+    rtcSetGeometryUserData(g, record.quadric.get());
+    rtcSetGeometryBoundsFunction(g, QuadricBounds, nullptr);
+    rtcSetGeometryIntersectFunction(g, QuadricIntersect);
+    rtcSetGeometryOccludedFunction(g, QuadricOccluded);
+    return g;
+}
+
+RTCGeometry RayScene::Impl::MakeSubdivision(const SubdivisionCage& cage, const M44f& m) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SUBDIVISION);
+    auto copy = [&](RTCBufferType type, RTCFormat format, size_t elementSize, const void* data,
+                    size_t count) {
+        if (count == 0) return;
+        void* dst = rtcSetNewGeometryBuffer(g, type, 0, format, elementSize, count);
+        std::memcpy(dst, data, elementSize * count);
+    };
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), cage.positions.size()));
+    for (size_t i = 0; i < cage.positions.size(); ++i) {
+        const V3f p = TransformPoint(m, cage.positions[i]);
+        v[3 * i] = p.x, v[3 * i + 1] = p.y, v[3 * i + 2] = p.z;
+    }
+    copy(RTC_BUFFER_TYPE_FACE, RTC_FORMAT_UINT, sizeof(unsigned), cage.faceVertexCounts.data(),
+         cage.faceVertexCounts.size());
+    copy(RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT, sizeof(unsigned), cage.indices.data(),
+         cage.indices.size());
+    copy(RTC_BUFFER_TYPE_EDGE_CREASE_INDEX, RTC_FORMAT_UINT2, 2 * sizeof(unsigned),
+         cage.creaseEdges.data(), cage.creaseEdges.size() / 2);
+    copy(RTC_BUFFER_TYPE_EDGE_CREASE_WEIGHT, RTC_FORMAT_FLOAT, sizeof(float),
+         cage.creaseWeights.data(), cage.creaseWeights.size());
+    copy(RTC_BUFFER_TYPE_VERTEX_CREASE_INDEX, RTC_FORMAT_UINT, sizeof(unsigned),
+         cage.cornerVertices.data(), cage.cornerVertices.size());
+    copy(RTC_BUFFER_TYPE_VERTEX_CREASE_WEIGHT, RTC_FORMAT_FLOAT, sizeof(float),
+         cage.cornerWeights.data(), cage.cornerWeights.size());
+    copy(RTC_BUFFER_TYPE_HOLE, RTC_FORMAT_UINT, sizeof(unsigned), cage.holeFaces.data(),
+         cage.holeFaces.size());
+    rtcSetGeometrySubdivisionMode(g, 0,
+                                  cage.interpolateBoundary ? RTC_SUBDIVISION_MODE_PIN_CORNERS
+                                                           : RTC_SUBDIVISION_MODE_NO_BOUNDARY);
+    rtcSetGeometryTessellationRate(g, 16.f);
+    return g;
+}
+
+RTCGeometry RayScene::Impl::MakeCurves(const CurveSet& curves, const M44f& m) {
+    static const RTCGeometryType kRound[] = {
+        RTC_GEOMETRY_TYPE_FLAT_LINEAR_CURVE, RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE,
+        RTC_GEOMETRY_TYPE_FLAT_BSPLINE_CURVE, RTC_GEOMETRY_TYPE_FLAT_CATMULL_ROM_CURVE};
+    static const RTCGeometryType kOriented[] = {
+        RTC_GEOMETRY_TYPE_FLAT_LINEAR_CURVE, RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE,
+        RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BSPLINE_CURVE,
+        RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_CATMULL_ROM_CURVE};
+    const int basis = static_cast<int>(curves.basis);
+    const bool oriented = curves.ribbon && !curves.normals.empty() && basis != 0;
+    RTCGeometry g = rtcNewGeometry(device, oriented ? kOriented[basis] : kRound[basis]);
+    const float scale = LengthScale(m);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                                          curves.controlPoints.size()));
+    for (size_t i = 0; i < curves.controlPoints.size(); ++i) {
+        const V3f p = TransformPoint(m, curves.controlPoints[i]);
+        v[4 * i] = p.x, v[4 * i + 1] = p.y, v[4 * i + 2] = p.z;
+        v[4 * i + 3] = curves.radii[i] * scale;
+    }
+    if (oriented) {
+        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0,
+                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                              curves.normals.size()));
+        const M44f inv = m.inverse();
+        for (size_t i = 0; i < curves.normals.size(); ++i) {
+            const V3f nn = Normalized(TransformNormal(inv, curves.normals[i]));
+            n[3 * i] = nn.x, n[3 * i + 1] = nn.y, n[3 * i + 2] = nn.z;
+        }
+    }
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), curves.segmentFirst.size()));
+    std::memcpy(idx, curves.segmentFirst.data(), curves.segmentFirst.size() * sizeof(unsigned));
+    return g;
+}
+
+RTCGeometry RayScene::Impl::MakePoints(const PointSet& points, const M44f& m) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_DISC_POINT);
+    const float scale = LengthScale(m);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), points.centers.size()));
+    for (size_t i = 0; i < points.centers.size(); ++i) {
+        const V3f p = TransformPoint(m, points.centers[i]);
+        v[4 * i] = p.x, v[4 * i + 1] = p.y, v[4 * i + 2] = p.z;
+        v[4 * i + 3] = points.radii[i] * scale;
+    }
+    return g;
+}
+
+void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape) {
+    auto record = std::make_unique<GeometryRecord>();
+    record->shape = &shape;
+    record->spaceFromObject = shape.worldFromObject;
+    record->objectFromSpace = shape.worldFromObject.inverse();
+    RTCGeometry g = nullptr;
+    const M44f& m = record->spaceFromObject;
+    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
+        if (mesh->TriangleCount() == 0) return;
+        record->meshVars = MeshPrimVars(*mesh);
+        record->vars = &record->meshVars;
+        g = MakeMesh(*mesh, m);
+    } else if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry)) {
+        record->vars = &quadric->vars;
+        g = MakeQuadric(*record, *quadric);
+    } else if (const auto* cage = std::get_if<SubdivisionCage>(&shape.geometry)) {
+        if (cage->faceVertexCounts.empty()) return;
+        record->vars = &cage->vars;
+        g = MakeSubdivision(*cage, m);
+    } else if (const auto* curves = std::get_if<CurveSet>(&shape.geometry)) {
+        if (curves->segmentFirst.empty()) return;
+        record->vars = &curves->vars;
+        g = MakeCurves(*curves, m);
+    } else if (const auto* points = std::get_if<PointSet>(&shape.geometry)) {
+        if (points->centers.empty()) return;
+        record->vars = &points->vars;
+        g = MakePoints(*points, m);
+    }
+    if (g) Attach(level, g, std::move(record));
+}
+
+RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
+    : impl_(std::make_unique<Impl>(diagnostics)) {
+    Impl& s = *impl_;
+    s.colorComponents = frame.options.colorComponents;
+    s.device = rtcNewDevice(nullptr);
+    rtcSetDeviceErrorFunction(s.device, ReportEmbreeError, &diagnostics);
+    s.top.scene = rtcNewScene(s.device);
+    rtcSetSceneFlags(s.top.scene, RTC_SCENE_FLAG_ROBUST);
+    for (const SceneShape& shape : frame.shapes) s.AddShape(s.top, shape);
+
+    // Each object definition becomes one Embree scene, placed by instance geometries.
+    std::map<const ObjectDefinition*, int> levelOf;
+    for (const ObjectInstanceUse& use : frame.instances) {
+        auto [it, isNew] = levelOf.emplace(use.definition.get(), int(s.definitions.size()));
+        if (isNew) {
+            SceneLevel level;
+            level.scene = rtcNewScene(s.device);
+            rtcSetSceneFlags(level.scene, RTC_SCENE_FLAG_ROBUST);
+            for (const SceneShape& shape : use.definition->shapes) s.AddShape(level, shape);
+            rtcCommitScene(level.scene);
+            s.definitions.push_back(std::move(level));
+        }
+        RTCGeometry g = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(g, s.definitions[it->second].scene);
+        // Imath's row-vector matrix, read column-major, is the column-vector matrix Embree wants.
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
+                                use.worldFromDefinition.getValue());
+        auto record = std::make_unique<GeometryRecord>();
+        record->instance = static_cast<int>(s.instances.size());
+        s.instances.push_back(
+            {it->second, use.worldFromDefinition, use.worldFromDefinition.inverse()});
+        s.Attach(s.top, g, std::move(record));
+    }
+    rtcCommitScene(s.top.scene);
+}
+
+RayScene::~RayScene() = default;
+
+size_t RayScene::GeometryCount() const {
+    size_t n = impl_->top.records.size();
+    for (const SceneLevel& level : impl_->definitions) n += level.records.size();
+    return n;
+}
+
+bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar,
+                         RayHit* hit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = org.x, rh.ray.org_y = org.y, rh.ray.org_z = org.z;
+    rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
+    rh.ray.tnear = tnear;
+    rh.ray.tfar = tfar;
+    rh.ray.time = 0;
+    rh.ray.mask = ~0u;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->top.scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    hit->t = rh.ray.tfar;
+    hit->geomID = rh.hit.geomID;
+    hit->primID = rh.hit.primID;
+    hit->instID = rh.hit.instID[0];
+    hit->u = rh.hit.u;
+    hit->v = rh.hit.v;
+    hit->Ng = V3f(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    return true;
+}
+
+bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray;
+    ray.org_x = org.x, ray.org_y = org.y, ray.org_z = org.z;
+    ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
+    ray.tnear = tnear;
+    ray.tfar = tfar;
+    ray.time = 0;
+    ray.mask = ~0u;
+    ray.id = 0;
+    ray.flags = 0;
+    rtcOccluded1(impl_->top.scene, &context, &ray);
+    return ray.tfar < 0;
+}
+
+ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
+                                         const V3f& spaceP) const {
+    const ShapeGeometry& geometry = record.shape->geometry;
+    const V3f objectP = TransformPoint(record.objectFromSpace, spaceP);
+    const V3f objectNg = TransformNormal(record.spaceFromObject, hit.Ng);
+    if (const auto* mesh = std::get_if<TriangleMesh>(&geometry))
+        return EvaluateMesh(*mesh, hit.primID, hit.u, hit.v);
+    if (const auto* quadric = std::get_if<QuadricShape>(&geometry))
+        return EvaluateQuadric(*quadric, hit.u, hit.v);
+    if (const auto* curves = std::get_if<CurveSet>(&geometry))
+        return EvaluateCurve(*curves, hit.primID, hit.u, hit.v, objectP, objectNg);
+    if (std::holds_alternative<PointSet>(geometry))
+        return EvaluatePoint(hit.primID, objectP, objectNg);
+    // A subdivision surface: the limit surface through Embree, already in the record's space.
+    float P[3], dPdu[3], dPdv[3];
+    rtcInterpolate1(record.geometry, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX, 0, P, dPdu,
+                    dPdv, 3);
+    ObjectHit out;
+    out.geometry.P = objectP;
+    out.geometry.dPdu = TransformVector(record.objectFromSpace, V3f(dPdu[0], dPdu[1], dPdu[2]));
+    out.geometry.dPdv = TransformVector(record.objectFromSpace, V3f(dPdv[0], dPdv[1], dPdv[2]));
+    out.geometry.Ng = Normalized(out.geometry.dPdu.cross(out.geometry.dPdv));
+    out.geometry.u = hit.u, out.geometry.v = hit.v;
+    out.N = out.geometry.Ng;
+    out.stencils.uniform = static_cast<int>(hit.primID);
+    return out;
+}
+
+SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit) const {
+    const Impl& s = *impl_;
+    const GeometryRecord* record;
+    M44f worldFromSpace, spaceFromWorld;
+    if (hit.instID != RTC_INVALID_GEOMETRY_ID) {
+        const InstancePlacement& placement = s.instances[s.top.records[hit.instID]->instance];
+        record = s.definitions[placement.level].records[hit.geomID].get();
+        worldFromSpace = placement.worldFromDefinition;
+        spaceFromWorld = placement.definitionFromWorld;
+    } else {
+        record = s.top.records[hit.geomID].get();
+    }
+    const V3f worldP = org + hit.t * dir;
+    const ObjectHit object = s.EvaluateObject(*record, hit, TransformPoint(spaceFromWorld, worldP));
+
+    const M44f worldFromObject = record->spaceFromObject * worldFromSpace;
+    const M44f objectFromWorld = spaceFromWorld * record->objectFromSpace;
+    SurfacePoint sp;
+    sp.shape = record->shape;
+    sp.P = worldP;
+    sp.dPdu = TransformVector(worldFromObject, object.geometry.dPdu);
+    sp.dPdv = TransformVector(worldFromObject, object.geometry.dPdv);
+    const float flip = record->shape->flipNormals ? -1.f : 1.f;
+    sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
+    sp.N = flip * Normalized(TransformNormal(objectFromWorld, object.N));
+    sp.u = object.geometry.u, sp.v = object.geometry.v;
+
+    const Attributes& attributes = *record->shape->attributes;
+    sp.Cs = attributes.color;
+    sp.Os = attributes.opacity;
+    const PrimVarSet* vars = record->vars;
+    if (const PrimVar* cs = vars->Find("Cs"); cs && cs->components == int(sp.Cs.size()))
+        InterpolatePrimVar(*cs, object.stencils, sp.Cs.data());
+    if (const PrimVar* os = vars->Find("Os"); os && os->components == int(sp.Os.size()))
+        InterpolatePrimVar(*os, object.stencils, sp.Os.data());
+    // s, t: from primitive variables, else the TextureCoordinates mapped over (u, v).
+    const std::vector<float>& tc = attributes.textureCoordinates;
+    const float u = sp.u, v = sp.v;
+    sp.s = (1 - u) * (1 - v) * tc[0] + u * (1 - v) * tc[2] + (1 - u) * v * tc[4] + u * v * tc[6];
+    sp.t = (1 - u) * (1 - v) * tc[1] + u * (1 - v) * tc[3] + (1 - u) * v * tc[5] + u * v * tc[7];
+    if (const PrimVar* st = vars->Find("st"); st && st->components == 2) {
+        float value[2];
+        InterpolatePrimVar(*st, object.stencils, value);
+        sp.s = value[0], sp.t = value[1];
+    }
+    if (const PrimVar* sv = vars->Find("s"); sv && sv->components == 1)
+        InterpolatePrimVar(*sv, object.stencils, &sp.s);
+    if (const PrimVar* tv = vars->Find("t"); tv && tv->components == 1)
+        InterpolatePrimVar(*tv, object.stencils, &sp.t);
+    return sp;
+}
+
+}  // namespace gonio

@@ -1,0 +1,44 @@
+#pragma once
+// The frame's geometry on Embree: the only interface to the ray tracing kernels. Built once per
+// frame; Intersect, Occluded and Evaluate are thread-safe.
+
+#include <Imath/ImathVec.h>
+
+#include <memory>
+
+#include "render/surface_point.h"
+#include "rib/diagnostics.h"
+#include "scene/frame.h"
+
+namespace gonio {
+
+struct RayHit {
+    float t = 0;
+    unsigned geomID = 0, primID = 0, instID = 0;
+    float u = 0, v = 0;
+    Imath::V3f Ng;  // as Embree reports it: not normalised, in the hit geometry's space
+};
+
+class RayScene {
+public:
+    RayScene(const Frame& frame, Diagnostics& diagnostics);
+    ~RayScene();
+    RayScene(const RayScene&) = delete;
+    RayScene& operator=(const RayScene&) = delete;
+
+    // The nearest hit of org + t·dir with tnear <= t <= tfar.
+    bool Intersect(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
+                   RayHit* hit) const;
+    // Whether anything lies on org + t·dir for tnear <= t <= tfar.
+    bool Occluded(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar) const;
+    // The surface at a hit, in world space, with Cs, Os, s, t interpolated.
+    SurfacePoint Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit) const;
+
+    size_t GeometryCount() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gonio

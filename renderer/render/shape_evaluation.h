@@ -1,0 +1,46 @@
+#pragma once
+// The differential geometry and primitive variables at a hit, in the shape's object space, for
+// the shapes whose surface we know without the ray tracer (meshes, quadrics, curves, points).
+// Subdivision surfaces are evaluated by Embree in ray_scene.cpp.
+
+#include "geometry/shape.h"
+#include "scene/frame.h"
+
+namespace gonio {
+
+// Which values of a primitive variable meet at a point, per storage class, and with what
+// weights: the one place that knows how RIB classes interpolate.
+struct Stencil {
+    int count = 0;
+    int index[4] = {0, 0, 0, 0};
+    float weight[4] = {0, 0, 0, 0};
+};
+
+struct ClassStencils {
+    int uniform = 0;
+    Stencil varying, vertex, faceVarying;
+};
+
+// Interpolates `var` at the point the stencils describe into out[0 .. var.components).
+void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float* out);
+
+// A hit in object space, before the transform to world space.
+struct ObjectHit {
+    SurfaceGeometry geometry;
+    Imath::V3f N;  // shading normal (equal to geometry.Ng unless the primitive gives normals)
+    ClassStencils stencils;
+};
+
+// `primID`, (b1, b2): Embree's triangle and barycentrics.
+ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
+ObjectHit EvaluateQuadric(const QuadricShape& shape, float u, float v);
+// `objectP`: the hit point; curves and points have no (u,v) surface of their own to evaluate.
+ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float v,
+                        const Imath::V3f& objectP, const Imath::V3f& objectNg);
+ObjectHit EvaluatePoint(unsigned primID, const Imath::V3f& objectP, const Imath::V3f& objectNg);
+
+// A mesh's variables as plain primitive variables, each rate expressed as the class that
+// interpolates the same way (PerFace → uniform, PerVertex → vertex, PerCorner → facevarying).
+PrimVarSet MeshPrimVars(const TriangleMesh& mesh);
+
+}  // namespace gonio

@@ -1,0 +1,21 @@
+#pragma once
+// What the shading stage knows about a ray hit: the differential geometry in world space and the
+// interpolated standard primitive variables, plus the shape so that the shading language can
+// fetch any user primitive variable by name.
+
+#include <Imath/ImathVec.h>
+
+#include <vector>
+
+#include "scene/frame.h"
+
+namespace gonio {
+
+struct SurfacePoint {
+    Imath::V3f P, N, Ng, dPdu, dPdv;  // world space; N and Ng unit length, facing "outside"
+    float u = 0, v = 0, s = 0, t = 0;
+    std::vector<float> Cs, Os;  // ncomps values each
+    const SceneShape* shape = nullptr;
+};
+
+}  // namespace gonio

@@ -1,0 +1,45 @@
+#include "rib/diagnostics.h"
+
+namespace gonio {
+
+std::string FileLoc::ToString() const {
+    std::string text = file ? *file : std::string("<unknown>");
+    if (line > 0) {
+        text += ":" + std::to_string(line);
+        if (column > 0) text += ":" + std::to_string(column);
+    }
+    return text;
+}
+
+void Diagnostics::Report(Severity severity, const FileLoc& loc, const std::string& message) {
+    static const char* const kLabels[] = {"note", "warning", "error"};
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (severity == Severity::Error) ++errors_;
+    if (severity == Severity::Warning) ++warnings_;
+    if (!sink_) return;
+    if (loc.file)
+        std::fprintf(sink_, "%s: %s: %s\n", loc.ToString().c_str(),
+                     kLabels[static_cast<int>(severity)], message.c_str());
+    else
+        std::fprintf(sink_, "gonio: %s: %s\n", kLabels[static_cast<int>(severity)],
+                     message.c_str());
+}
+
+void Diagnostics::NoteOnce(const std::string& key, const FileLoc& loc, const std::string& message) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!seenKeys_.insert(key).second) return;
+    }
+    Note(loc, message);
+}
+
+void Diagnostics::WarningOnce(const std::string& key, const FileLoc& loc,
+                              const std::string& message) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!seenKeys_.insert(key).second) return;
+    }
+    Warning(loc, message);
+}
+
+}  // namespace gonio

@@ -1,0 +1,46 @@
+#pragma once
+// Compiler-style error reporting shared by every stage. Errors are collected, not thrown, so a run
+// reports all of them; the caller decides from ErrorCount() whether the result may be used.
+
+#include <cstdio>
+#include <mutex>
+#include <set>
+#include <string>
+
+#include "rib/file_loc.h"
+
+namespace gonio {
+
+enum class Severity { Note, Warning, Error };
+
+class Diagnostics {
+  public:
+    explicit Diagnostics(std::FILE* sink = stderr) : sink_(sink) {}
+
+    void Report(Severity severity, const FileLoc& loc, const std::string& message);
+    void Error(const FileLoc& loc, const std::string& message) {
+        Report(Severity::Error, loc, message);
+    }
+    void Warning(const FileLoc& loc, const std::string& message) {
+        Report(Severity::Warning, loc, message);
+    }
+    void Note(const FileLoc& loc, const std::string& message) {
+        Report(Severity::Note, loc, message);
+    }
+    // Reports `message` only the first time `key` is seen, for notes such as "ShadingRate is
+    // ignored by a ray tracer" that would otherwise repeat once per request.
+    void NoteOnce(const std::string& key, const FileLoc& loc, const std::string& message);
+    void WarningOnce(const std::string& key, const FileLoc& loc, const std::string& message);
+
+    int ErrorCount() const { return errors_; }
+    int WarningCount() const { return warnings_; }
+
+  private:
+    std::FILE* sink_;
+    std::mutex mutex_;
+    std::set<std::string> seenKeys_;
+    int errors_ = 0;
+    int warnings_ = 0;
+};
+
+}  // namespace gonio

@@ -1,0 +1,251 @@
+// The per-input parsing state: values of the current request, strings and numbers from the
+// lexer, and the dispatch of each finished request through the request table.
+
+#include "rib/rib_file_parser.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include "rib/rib_session.h"
+#include "rib_grammar.hpp"
+
+namespace gonio {
+namespace {
+
+int OctalDigit(char c) { return c >= '0' && c <= '7' ? c - '0' : -1; }
+
+int HexDigit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+// Decodes the C escapes of a string token's body (without its quotes).
+void DecodeEscapes(const char* text, int length, std::string* out) {
+    out->clear();
+    for (int i = 0; i < length; ++i) {
+        if (text[i] != '\\' || i + 1 == length) {
+            out->push_back(text[i]);
+            continue;
+        }
+        const char c = text[++i];
+        switch (c) {
+            case 'n':
+                out->push_back('\n');
+                break;
+            case 't':
+                out->push_back('\t');
+                break;
+            case 'r':
+                out->push_back('\r');
+                break;
+            case 'b':
+                out->push_back('\b');
+                break;
+            case 'f':
+                out->push_back('\f');
+                break;
+            case 'a':
+                out->push_back('\a');
+                break;
+            case 'v':
+                out->push_back('\v');
+                break;
+            case 'x': {
+                int value = 0, digits = 0;
+                while (digits < 2 && i + 1 < length && HexDigit(text[i + 1]) >= 0)
+                    value = value * 16 + HexDigit(text[++i]), ++digits;
+                out->push_back(digits ? static_cast<char>(value) : 'x');
+                break;
+            }
+            default:
+                if (OctalDigit(c) >= 0) {
+                    int value = OctalDigit(c), digits = 1;
+                    while (digits < 3 && i + 1 < length && OctalDigit(text[i + 1]) >= 0)
+                        value = value * 8 + OctalDigit(text[++i]), ++digits;
+                    out->push_back(static_cast<char>(value));
+                } else {
+                    out->push_back(c);  // \\ \" \' \? and anything else stand for themselves
+                }
+        }
+    }
+}
+
+}  // namespace
+
+RibFileParser::RibFileParser(RibSession& session, std::shared_ptr<const std::string> name,
+                             gzFile input)
+    : session_(session), name_(std::move(name)), input_(input) {}
+
+RibFileParser::RibFileParser(RibSession& session, std::shared_ptr<const std::string> name,
+                             const std::string& text)
+    : session_(session), name_(std::move(name)), text_(&text) {}
+
+int RibFileParser::ReadInput(char* buffer, int maxSize) {
+    if (!input_ || readFailed_) return 0;
+    const int got = gzread(input_, buffer, static_cast<unsigned>(maxSize));
+    if (got >= 0) return got;
+    int code = 0;
+    const char* why = gzerror(input_, &code);
+    if (code == Z_ERRNO) why = std::strerror(errno);
+    session_.Error(Loc(line, column), std::string("cannot read the file: ") + why);
+    readFailed_ = true;
+    return 0;
+}
+
+bool RibFileParser::ParseNumber(const char* text, int length, double* value) {
+    if (*text == '+') ++text, --length;  // from_chars does not take a leading '+'
+    const auto result = std::from_chars(text, text + length, *value);
+    if (result.ec == std::errc()) return true;
+    // Out of range: an underflow is a harmless zero, an overflow is an error.
+    *value = std::strtod(text, nullptr);
+    return std::isfinite(*value);
+}
+
+int RibFileParser::NewString(const char* text, int length) {
+    std::size_t index = 0;
+    DecodeEscapes(text, length, &values_.NewString(&index));
+    return static_cast<int>(index);
+}
+
+int RibFileParser::LookupRequest(const char* text, int length) {
+    lastRequestName_.assign(text, static_cast<std::size_t>(length));
+    const RequestRule* rule = FindRequest(lastRequestName_);
+    return rule ? static_cast<int>(rule - AllRequests().data()) : -1;
+}
+
+void RibFileParser::LexError(int errorLine, int errorColumn, const std::string& message) {
+    session_.Error(Loc(errorLine, errorColumn), message);
+}
+
+void RibFileParser::SetLookahead(int token, int tokenLine, int tokenColumn) {
+    lookahead_ = token;
+    lookaheadLine_ = tokenLine;
+    lookaheadColumn_ = tokenColumn;
+    if (token == '[') {  // arrays do not nest, so the last '[' opened the current array
+        arrayLine_ = tokenLine;
+        arrayColumn_ = tokenColumn;
+    }
+}
+
+bool RibFileParser::ShouldStop() const { return session_.Stopped(); }
+
+void RibFileParser::AddNumber(double number, int valueLine, int valueColumn) {
+    RibValue value;
+    value.kind = ValueKind::Number;
+    value.line = valueLine;
+    value.column = valueColumn;
+    value.begin = values_.numbers.size();
+    values_.numbers.push_back(number);
+    values_.values.push_back(value);
+}
+
+void RibFileParser::AddString(int index, int valueLine, int valueColumn) {
+    RibValue value;
+    value.kind = ValueKind::String;
+    value.line = valueLine;
+    value.column = valueColumn;
+    value.begin = static_cast<std::size_t>(index);
+    values_.values.push_back(value);
+}
+
+void RibFileParser::BeginArray() {
+    inArray_ = true;
+    arrayNumbersBegin_ = values_.numbers.size();
+    arrayNumbers_ = arrayStrings_ = 0;
+}
+
+void RibFileParser::ArrayNumber(double number) {
+    values_.numbers.push_back(number);
+    ++arrayNumbers_;
+}
+
+void RibFileParser::ArrayString(int index) {
+    // The lexer fills the pool in order, so an array's strings are consecutive.
+    if (arrayStrings_++ == 0) arrayStringsBegin_ = static_cast<std::size_t>(index);
+}
+
+void RibFileParser::EndArray(int openLine, int openColumn) {
+    inArray_ = false;
+    if (arrayNumbers_ && arrayStrings_) {
+        session_.Error(Loc(openLine, openColumn),
+                       "array mixes numbers and strings (an array holds one or the other)");
+        requestBad_ = true;
+        return;
+    }
+    RibValue value;
+    value.line = openLine;
+    value.column = openColumn;
+    if (arrayStrings_) {
+        value.kind = ValueKind::StringArray;
+        value.begin = arrayStringsBegin_;
+        value.count = arrayStrings_;
+    } else {
+        value.kind = ValueKind::NumberArray;
+        value.begin = arrayNumbersBegin_;
+        value.count = arrayNumbers_;
+    }
+    values_.values.push_back(value);
+}
+
+void RibFileParser::Dispatch(int request, int requestLine, int requestColumn) {
+    const FileLoc loc = Loc(requestLine, requestColumn);
+    if (request < 0) {
+        session_.Error(loc, "unknown request '" + lastRequestName_ + "'");
+    } else if (!requestBad_) {
+        const RequestRule& rule = AllRequests()[static_cast<std::size_t>(request)];
+        MatchError error;
+        if (MatchRequest(rule, values_, session_.ColorComponents(), loc, &args_, &error))
+            rule.call(args_, session_.Target(), session_);
+        else
+            session_.Error(Loc(error.line, error.column), error.message);
+    }
+    Discard();
+}
+
+void RibFileParser::Discard() {
+    values_.Clear();
+    requestBad_ = false;
+    inArray_ = false;
+}
+
+std::string RibFileParser::DescribeLookahead() const {
+    switch (lookahead_) {
+        case 0:
+            return "the end of the file";
+        case RIB_NUMBER:
+            return "a number";
+        case RIB_STRING:
+            return "a string";
+        case RIB_REQUEST:
+            return "request '" + lastRequestName_ + "'";
+        case '[':
+            return "'['";
+        case ']':
+            return "']'";
+    }
+    return "an unexpected token";
+}
+
+void RibFileParser::SyntaxError() {
+    if (lookahead_ == RIB_LEX_ERROR) return;  // the lexer has said what is wrong
+    const FileLoc loc = Loc(lookaheadLine_, lookaheadColumn_);
+    std::string message;
+    if (inArray_ && lookahead_ == '[') {
+        message = "arrays cannot be nested (the array opened at " + std::to_string(arrayLine_) +
+                  ":" + std::to_string(arrayColumn_) + " is still open)";
+    } else if (inArray_) {
+        message = "expected ']' to close the array opened at " + std::to_string(arrayLine_) + ":" +
+                  std::to_string(arrayColumn_) + ", found " + DescribeLookahead();
+    } else if (lookahead_ == ']') {
+        message = "']' without a matching '['";
+    } else {
+        message = "expected a request name, found " + DescribeLookahead();
+    }
+    session_.Error(loc, message);
+}
+
+}  // namespace gonio

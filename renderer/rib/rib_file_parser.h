@@ -1,0 +1,79 @@
+#pragma once
+// One RIB input (a file, an archive, standard input or a string) being parsed: its Flex scanner
+// and Bison parser, the values of the request being read, and the functions the lexer and the
+// grammar actions call. Archives get a RibFileParser of their own; what they share (the target,
+// the search path, the include stack) lives in RibSession.
+
+#include <zlib.h>
+
+#include <memory>
+#include <string>
+
+#include "rib/file_loc.h"
+#include "rib/request_table.h"
+#include "rib/request_values.h"
+
+namespace gonio {
+
+class RibSession;
+
+class RibFileParser {
+  public:
+    RibFileParser(RibSession& session, std::shared_ptr<const std::string> name, gzFile input);
+    RibFileParser(RibSession& session, std::shared_ptr<const std::string> name,
+                  const std::string& text);
+
+    // Reads the whole input, calling the session's target once per request (rib_lexer.l).
+    void Parse();
+
+    // The lexer's position: the line and column of the next character.
+    int line = 1;
+    int column = 1;
+
+    // Called by the lexer.
+    int ReadInput(char* buffer, int maxSize);
+    bool ParseNumber(const char* text, int length, double* value);
+    int NewString(const char* text, int length);      // decodes C escapes; returns the pool index
+    int LookupRequest(const char* text, int length);  // a request table index, or -1
+    void LexError(int errorLine, int errorColumn, const std::string& message);
+    void SetLookahead(int token, int tokenLine, int tokenColumn);
+    bool ShouldStop() const;
+
+    // Called by the grammar actions.
+    void AddNumber(double number, int valueLine, int valueColumn);
+    void AddString(int index, int valueLine, int valueColumn);
+    void BeginArray();
+    void ArrayNumber(double number);
+    void ArrayString(int index);
+    void EndArray(int openLine, int openColumn);
+    void Dispatch(int request, int requestLine, int requestColumn);
+    void Discard();
+    void SyntaxError();
+
+  private:
+    FileLoc Loc(int atLine, int atColumn) const { return FileLoc{name_, atLine, atColumn}; }
+    std::string DescribeLookahead() const;
+
+    RibSession& session_;
+    std::shared_ptr<const std::string> name_;
+    gzFile input_ = nullptr;
+    const std::string* text_ = nullptr;
+
+    RequestValues values_;
+    RequestArgs args_;         // reused so that its vectors keep their capacity
+    bool requestBad_ = false;  // an error inside the request was already reported
+
+    // The array being read.
+    bool inArray_ = false;
+    int arrayLine_ = 0, arrayColumn_ = 0;
+    std::size_t arrayNumbersBegin_ = 0, arrayNumbers_ = 0;
+    std::size_t arrayStringsBegin_ = 0, arrayStrings_ = 0;
+
+    // The token the grammar is looking at, for syntax error messages.
+    int lookahead_ = 0;
+    int lookaheadLine_ = 0, lookaheadColumn_ = 0;
+    std::string lastRequestName_;  // of the last request name read, known or not
+    bool readFailed_ = false;
+};
+
+}  // namespace gonio

@@ -1,0 +1,334 @@
+// SceneBuilder: the attributes of RISpec §4.2 and the transformations of §4.3.
+
+#include <Imath/ImathMatrixAlgo.h>
+
+#include <cmath>
+
+#include "scene/scene_builder_state.h"
+
+namespace gonio {
+namespace {
+
+constexpr float kDegrees = 3.14159265358979323846f / 180.f;
+
+std::string HandleKey(const RtHandle& handle) { return (handle.isString ? "s:" : "i:") + handle.text; }
+
+}  // namespace
+
+bool SceneBuilder::SkipMotionSample() {
+    if (state_->motionRequestCount < 0) return false;
+    return ++state_->motionRequestCount > 1;
+}
+
+// ---- colour and shaders ---------------------------------------------------------------------
+
+void SceneBuilder::Color(const std::vector<float>& color, const FileLoc& loc) {
+    if (static_cast<int>(color.size()) != state_->options.colorComponents) {
+        diagnostics_.Error(loc, "Color needs " + std::to_string(state_->options.colorComponents) +
+                                    " numbers, got " + std::to_string(color.size()));
+        return;
+    }
+    state_->attributes.color = color;
+}
+
+void SceneBuilder::Opacity(const std::vector<float>& opacity, const FileLoc& loc) {
+    if (static_cast<int>(opacity.size()) != state_->options.colorComponents) {
+        diagnostics_.Error(loc, "Opacity needs " +
+                                    std::to_string(state_->options.colorComponents) +
+                                    " numbers, got " + std::to_string(opacity.size()));
+        return;
+    }
+    state_->attributes.opacity = opacity;
+}
+
+void SceneBuilder::TextureCoordinates(const std::vector<float>& st8, const FileLoc& loc) {
+    if (st8.size() != 8) {
+        diagnostics_.Error(loc, "TextureCoordinates needs 8 numbers");
+        return;
+    }
+    state_->attributes.textureCoordinates = st8;
+}
+
+void SceneBuilder::SetShader(ShaderInstance* shader, const std::string& name,
+                             const ParamList& params, const FileLoc& loc) {
+    for (const Param& p : params) {  // typed here so that undeclared tokens are reported early
+        PrimVar var;
+        TypeParam(p, declarations_, state_->options.colorComponents, diagnostics_, &var);
+    }
+    shader->name = name;
+    shader->params = params;
+    shader->worldFromShader = state_->transform;
+    shader->loc = loc;
+}
+
+void SceneBuilder::LightSource(const std::string& name, const RtHandle& handle,
+                               const ParamList& params, const FileLoc& loc) {
+    if (!RequireWorld("LightSource", loc)) return;
+    SceneLight light;
+    SetShader(&light.light.shader, name, params, loc);
+    light.light.handle = handle;
+    const int index = static_cast<int>(state_->frame.lights.size());
+    state_->frame.lights.push_back(std::move(light));
+    state_->lightHandles[HandleKey(handle)] = index;
+    state_->attributes.activeLights.insert(index);
+}
+
+void SceneBuilder::AreaLightSource(const std::string& name, const RtHandle& handle,
+                                   const ParamList& params, const FileLoc& loc) {
+    diagnostics_.NoteOnce("AreaLightSource", loc,
+                          "AreaLightSource is recorded and lights the scene from its origin, as "
+                          "a LightSource would");
+    LightSource(name, handle, params, loc);
+    if (!state_->frame.lights.empty()) state_->frame.lights.back().light.isArea = true;
+}
+
+int SceneBuilder::LightIndex(const RtHandle& handle, const FileLoc& loc) {
+    auto it = state_->lightHandles.find(HandleKey(handle));
+    if (it != state_->lightHandles.end()) return it->second;
+    diagnostics_.Error(loc, "Illuminate: no light has handle " +
+                                (handle.isString ? "\"" + handle.text + "\"" : handle.text));
+    return -1;
+}
+
+void SceneBuilder::Illuminate(const RtHandle& light, bool on, const FileLoc& loc) {
+    if (!RequireWorld("Illuminate", loc)) return;
+    const int index = LightIndex(light, loc);
+    if (index < 0) return;
+    if (on)
+        state_->attributes.activeLights.insert(index);
+    else
+        state_->attributes.activeLights.erase(index);
+}
+
+void SceneBuilder::Surface(const std::string& name, const ParamList& params, const FileLoc& loc) {
+    SetShader(&state_->attributes.surface, name, params, loc);
+}
+
+void SceneBuilder::Displacement(const std::string& name, const ParamList& params,
+                                const FileLoc& loc) {
+    SetShader(&state_->attributes.displacement, name, params, loc);
+}
+
+void SceneBuilder::Atmosphere(const std::string& name, const ParamList& params,
+                              const FileLoc& loc) {
+    SetShader(&state_->attributes.atmosphere, name, params, loc);
+}
+
+void SceneBuilder::Interior(const std::string& name, const ParamList& params, const FileLoc& loc) {
+    SetShader(&state_->attributes.interior, name, params, loc);
+}
+
+void SceneBuilder::Exterior(const std::string& name, const ParamList& params, const FileLoc& loc) {
+    SetShader(&state_->attributes.exterior, name, params, loc);
+}
+
+// ---- REYES-only attributes: accepted, ignored with one note each ------------------------------
+
+void SceneBuilder::ShadingRate(float, const FileLoc& loc) { IgnoredRequest("ShadingRate", loc); }
+void SceneBuilder::ShadingInterpolation(const std::string&, const FileLoc& loc) {
+    IgnoredRequest("ShadingInterpolation", loc);
+}
+void SceneBuilder::Bound(const std::vector<float>&, const FileLoc& loc) {
+    IgnoredRequest("Bound", loc);
+}
+void SceneBuilder::Detail(const std::vector<float>&, const FileLoc& loc) {
+    IgnoredRequest("Detail", loc);
+}
+void SceneBuilder::DetailRange(float, float, float, float, const FileLoc& loc) {
+    IgnoredRequest("DetailRange", loc);
+}
+void SceneBuilder::GeometricApproximation(const std::string&, float, const FileLoc& loc) {
+    IgnoredRequest("GeometricApproximation", loc);
+}
+
+void SceneBuilder::Matte(bool on, const FileLoc&) { state_->attributes.matte = on; }
+
+// ---- orientation ----------------------------------------------------------------------------
+
+void SceneBuilder::Orientation(const std::string& orientation, const FileLoc& loc) {
+    using O = Attributes::Orientation;
+    static const std::pair<const char*, O> kNames[] = {
+        {"outside", O::Outside}, {"inside", O::Inside}, {"lh", O::LeftHanded}, {"rh", O::RightHanded}};
+    for (const auto& [name, value] : kNames) {
+        if (orientation == name) {
+            state_->attributes.orientation = value;
+            return;
+        }
+    }
+    diagnostics_.Error(loc, "Orientation must be outside, inside, lh or rh, got \"" + orientation +
+                                "\"");
+}
+
+void SceneBuilder::ReverseOrientation(const FileLoc&) {
+    using O = Attributes::Orientation;
+    static const O kReversed[] = {O::Inside, O::Outside, O::RightHanded, O::LeftHanded};
+    state_->attributes.orientation = kReversed[static_cast<int>(state_->attributes.orientation)];
+}
+
+void SceneBuilder::Sides(int sides, const FileLoc& loc) {
+    if (sides != 1 && sides != 2) {
+        diagnostics_.Error(loc, "Sides must be 1 or 2, got " + std::to_string(sides));
+        return;
+    }
+    state_->attributes.twoSided = sides == 2;
+}
+
+void SceneBuilder::Attribute(const std::string& name, const ParamList& params,
+                             const FileLoc& loc) {
+    static const char* const kKnown[] = {"identifier", "displacementbound", "trimcurve", "light",
+                                         "visibility", "shade",   "brdflight", "user",
+                                         "dice",       "sides",   "trace",     "render"};
+    bool known = false;
+    for (const char* k : kKnown) known = known || name == k;
+    if (!known) diagnostics_.WarningOnce("Attribute " + name, loc,
+                                         "unknown Attribute \"" + name + "\" (kept for shaders)");
+    ParamList& merged = state_->attributes.user[name];
+    for (const Param& p : params) {
+        PrimVar var;
+        if (!TypeParam(p, declarations_, state_->options.colorComponents, diagnostics_, &var))
+            continue;
+        if (name == "identifier" && var.decl.name == "name" && !var.strings.empty())
+            state_->attributes.identifier = var.strings[0];
+        merged.push_back(p);
+    }
+}
+
+void SceneBuilder::Basis(const RtBasis& ubasis, int ustep, const RtBasis& vbasis, int vstep,
+                         const FileLoc& loc) {
+    auto resolve = [&](const RtBasis& basis, int step, PatchBasis* out) {
+        if (basis.name.empty()) {
+            out->matrix = ToM44f(basis.matrix);
+        } else if (std::optional<PatchBasis> named = NamedBasis(basis.name)) {
+            out->matrix = named->matrix;
+        } else {
+            diagnostics_.Error(loc, "Basis: unknown basis \"" + basis.name + "\"");
+            return;
+        }
+        out->step = step;
+    };
+    resolve(ubasis, ustep, &state_->attributes.ubasis);
+    resolve(vbasis, vstep, &state_->attributes.vbasis);
+}
+
+void SceneBuilder::TrimCurve(const std::vector<int>&, const std::vector<int>&,
+                             const std::vector<float>&, const std::vector<float>&,
+                             const std::vector<float>&, const std::vector<int>&,
+                             const std::vector<float>&, const std::vector<float>&,
+                             const std::vector<float>&, const FileLoc& loc) {
+    diagnostics_.WarningOnce("TrimCurve", loc,
+                             "TrimCurve is not supported yet: NuPatch surfaces are untrimmed");
+}
+
+// ---- transformations ------------------------------------------------------------------------
+// RIB uses row vectors (p' = p·M), as Imath does: a new transform applies to object points
+// first, so it multiplies from the left.
+
+void SceneBuilder::ConcatTransform(const M44f& m) {
+    if (SkipMotionSample()) return;
+    state_->transform = m * state_->transform;
+}
+
+void SceneBuilder::Identity(const FileLoc&) {
+    if (SkipMotionSample()) return;
+    state_->transform = M44f();
+}
+
+void SceneBuilder::Transform(const RtMatrix& m, const FileLoc&) {
+    if (SkipMotionSample()) return;
+    state_->transform = ToM44f(m);
+}
+
+void SceneBuilder::ConcatTransform(const RtMatrix& m, const FileLoc&) { ConcatTransform(ToM44f(m)); }
+
+void SceneBuilder::Perspective(float fov, const FileLoc& loc) {
+    if (!(fov > 0 && fov < 180)) {
+        diagnostics_.Error(loc, "Perspective needs 0 < fov < 180");
+        return;
+    }
+    // A projective matrix cannot be part of a ray tracer's camera transform: treat it as the
+    // Projection it almost always stands for.
+    diagnostics_.NoteOnce("Perspective", loc,
+                          "Perspective is rendered as Projection \"perspective\" with this fov");
+    state_->options.projection = "perspective";
+    state_->options.fov = fov;
+}
+
+void SceneBuilder::Translate(float dx, float dy, float dz, const FileLoc&) {
+    M44f m;
+    m.setTranslation(Imath::V3f(dx, dy, dz));
+    ConcatTransform(m);
+}
+
+void SceneBuilder::Rotate(float angle, float dx, float dy, float dz, const FileLoc& loc) {
+    Imath::V3f axis(dx, dy, dz);
+    if (axis.length() == 0) {
+        diagnostics_.Error(loc, "Rotate: the axis is zero");
+        return;
+    }
+    M44f m;
+    m.setAxisAngle(axis.normalized(), angle * kDegrees);
+    ConcatTransform(m);
+}
+
+void SceneBuilder::Scale(float sx, float sy, float sz, const FileLoc&) {
+    M44f m;
+    m.setScale(Imath::V3f(sx, sy, sz));
+    ConcatTransform(m);
+}
+
+// RISpec §4.3 RiSkew: shears so that a vector along d1 turns by `angle` towards d2.
+void SceneBuilder::Skew(float angle, float dx1, float dy1, float dz1, float dx2, float dy2,
+                        float dz2, const FileLoc& loc) {
+    Imath::V3f d1(dx1, dy1, dz1), d2(dx2, dy2, dz2);
+    if (d1.length() == 0 || d2.length() == 0) {
+        diagnostics_.Error(loc, "Skew: a direction is zero");
+        return;
+    }
+    d1.normalize();
+    d2.normalize();
+    const float cosA = d1.dot(d2);
+    const Imath::V3f perp = (d2 - cosA * d1);
+    const float perpLen = perp.length();
+    const float alpha = std::acos(std::fmax(-1.f, std::fmin(1.f, cosA)));
+    const float target = alpha - angle * kDegrees;
+    if (perpLen == 0 || target <= 0 || target >= 3.14159265f) {
+        diagnostics_.Error(loc, "Skew: the angle is out of range for these directions");
+        return;
+    }
+    const Imath::V3f p = perp / perpLen;
+    // Points move along d1 in proportion to their coordinate along p̂, the part of d2
+    // perpendicular to d1, which turns d2 from angle alpha to alpha - angle off d1.
+    const float k = std::sin(alpha) > 0 ? (std::cos(alpha) / std::sin(alpha) -
+                                           std::cos(target) / std::sin(target))
+                                        : 0;
+    M44f m;  // p' = p + k·(p·p̂)·d1 : rows are the images of the basis vectors
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) m[r][c] += k * p[r] * d1[c];
+    ConcatTransform(m);
+}
+
+void SceneBuilder::CoordinateSystem(const std::string& space, const FileLoc&) {
+    auto& spaces = state_->inWorld ? state_->frame.namedSpaces : state_->namedSpaces;
+    spaces[space] = state_->transform;
+}
+
+void SceneBuilder::ScopedCoordinateSystem(const std::string& space, const FileLoc& loc) {
+    CoordinateSystem(space, loc);
+}
+
+void SceneBuilder::CoordSysTransform(const std::string& space, const FileLoc& loc) {
+    if (SkipMotionSample()) return;
+    if (space == "world" && state_->inWorld) {
+        state_->transform = M44f();
+        return;
+    }
+    const auto& spaces = state_->inWorld ? state_->frame.namedSpaces : state_->namedSpaces;
+    auto it = spaces.find(space);
+    if (it == spaces.end()) {
+        diagnostics_.Error(loc, "CoordSysTransform: no coordinate system named \"" + space + "\"");
+        return;
+    }
+    state_->transform = it->second;
+}
+
+}  // namespace gonio

@@ -1,0 +1,230 @@
+// SceneBuilder: the geometric primitives of RISpec §5. Each request types its parameter list,
+// calls the geometry code (renderer/geometry/) for a description, and adds it as a SceneShape.
+
+#include <Imath/ImathMatrixAlgo.h>
+
+#include "geometry/patches.h"
+#include "geometry/polygons.h"
+#include "geometry/primvar_eval.h"
+#include "geometry/quadrics.h"
+#include "scene/scene_builder_state.h"
+
+namespace gonio {
+
+bool SceneBuilder::StartPrimitive(const char* request, const FileLoc& loc) {
+    if (!state_->inWorld && !state_->openObject) {
+        diagnostics_.Error(loc, std::string(request) +
+                                    " is a primitive and is only valid inside WorldBegin/WorldEnd");
+        return false;
+    }
+    return !SkipMotionSample();
+}
+
+bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
+    return TypePrimVars(params, declarations_, state_->options.colorComponents, diagnostics_, vars);
+}
+
+void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
+    SceneShape shape;
+    shape.geometry = std::move(geometry);
+    shape.attributes = std::make_shared<const Attributes>(state_->attributes);
+    shape.worldFromObject = state_->transform;
+    shape.loc = loc;
+    // Handedness of camera space from object space; camera space is left-handed.
+    const M44f cameraFromObject =
+        state_->transform * (state_->inWorld ? state_->frame.options.cameraFromWorld : M44f());
+    const bool leftHanded = cameraFromObject.determinant() > 0;
+    using O = Attributes::Orientation;
+    switch (state_->attributes.orientation) {
+        case O::Outside: shape.flipNormals = false; break;
+        case O::Inside: shape.flipNormals = true; break;
+        case O::LeftHanded: shape.flipNormals = !leftHanded; break;
+        case O::RightHanded: shape.flipNormals = leftHanded; break;
+    }
+    if (state_->openObject)
+        state_->openObject->shapes.push_back(std::move(shape));
+    else
+        state_->frame.shapes.push_back(std::move(shape));
+}
+
+template <class T>
+void SceneBuilder::AddGeometry(const char* request, GeometryResult<T> result, const FileLoc& loc) {
+    if (!result) {
+        diagnostics_.Error(loc, std::string(request) + ": " + result.Error());
+        return;
+    }
+    AddShape(result.Take(), loc);
+}
+
+// ---- polygons -------------------------------------------------------------------------------
+
+void SceneBuilder::Polygon(const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("Polygon", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("Polygon", MakePolygon(vars), loc);
+}
+
+void SceneBuilder::GeneralPolygon(const std::vector<int>& nverts, const ParamList& params,
+                                  const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("GeneralPolygon", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("GeneralPolygon", MakeGeneralPolygon(nverts, vars), loc);
+}
+
+void SceneBuilder::PointsPolygons(const std::vector<int>& nverts, const std::vector<int>& verts,
+                                  const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("PointsPolygons", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("PointsPolygons", MakePointsPolygons(nverts, verts, vars), loc);
+}
+
+void SceneBuilder::PointsGeneralPolygons(const std::vector<int>& nloops,
+                                         const std::vector<int>& nverts,
+                                         const std::vector<int>& verts, const ParamList& params,
+                                         const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("PointsGeneralPolygons", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("PointsGeneralPolygons", MakePointsGeneralPolygons(nloops, nverts, verts, vars),
+                loc);
+}
+
+// ---- patches --------------------------------------------------------------------------------
+
+void SceneBuilder::Patch(const std::string& type, const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("Patch", loc) || !TypeVars(params, &vars)) return;
+    const Attributes& a = state_->attributes;
+    AddGeometry("Patch", MakePatch(type, a.ubasis, a.vbasis, vars), loc);
+}
+
+void SceneBuilder::PatchMesh(const std::string& type, int nu, const std::string& uwrap, int nv,
+                             const std::string& vwrap, const ParamList& params,
+                             const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("PatchMesh", loc) || !TypeVars(params, &vars)) return;
+    const Attributes& a = state_->attributes;
+    AddGeometry("PatchMesh", MakePatchMesh(type, nu, uwrap, nv, vwrap, a.ubasis, a.vbasis, vars),
+                loc);
+}
+
+// ---- quadrics -------------------------------------------------------------------------------
+
+void SceneBuilder::AddQuadric(const char* request, std::unique_ptr<Quadric> quadric,
+                              const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive(request, loc) || !TypeVars(params, &vars)) return;
+    // RISpec §5.4: quadrics take one uniform value and four varying/vertex values, at the
+    // corners of their (u, v) square.
+    ClassCounts counts;
+    counts.uniform = 1;
+    counts.varying = counts.vertex = counts.faceVarying = 4;
+    if (std::optional<std::string> error = CheckCounts(vars, counts)) {
+        diagnostics_.Error(loc, std::string(request) + ": " + *error);
+        return;
+    }
+    AddShape(QuadricShape{std::move(quadric), std::move(vars)}, loc);
+}
+
+void SceneBuilder::Sphere(float radius, float zmin, float zmax, float thetamax,
+                          const ParamList& params, const FileLoc& loc) {
+    AddQuadric("Sphere", MakeSphere(radius, zmin, zmax, thetamax), params, loc);
+}
+
+void SceneBuilder::Cone(float height, float radius, float thetamax, const ParamList& params,
+                        const FileLoc& loc) {
+    AddQuadric("Cone", MakeCone(height, radius, thetamax), params, loc);
+}
+
+void SceneBuilder::Cylinder(float radius, float zmin, float zmax, float thetamax,
+                            const ParamList& params, const FileLoc& loc) {
+    AddQuadric("Cylinder", MakeCylinder(radius, zmin, zmax, thetamax), params, loc);
+}
+
+void SceneBuilder::Hyperboloid(float x1, float y1, float z1, float x2, float y2, float z2,
+                               float thetamax, const ParamList& params, const FileLoc& loc) {
+    AddQuadric("Hyperboloid", MakeHyperboloid(V3f(x1, y1, z1), V3f(x2, y2, z2), thetamax), params,
+               loc);
+}
+
+void SceneBuilder::Paraboloid(float rmax, float zmin, float zmax, float thetamax,
+                              const ParamList& params, const FileLoc& loc) {
+    AddQuadric("Paraboloid", MakeParaboloid(rmax, zmin, zmax, thetamax), params, loc);
+}
+
+void SceneBuilder::Disk(float height, float radius, float thetamax, const ParamList& params,
+                        const FileLoc& loc) {
+    AddQuadric("Disk", MakeDisk(height, radius, thetamax), params, loc);
+}
+
+void SceneBuilder::Torus(float majorRadius, float minorRadius, float phimin, float phimax,
+                         float thetamax, const ParamList& params, const FileLoc& loc) {
+    AddQuadric("Torus", MakeTorus(majorRadius, minorRadius, phimin, phimax, thetamax), params, loc);
+}
+
+// ---- not rendered ---------------------------------------------------------------------------
+
+void SceneBuilder::Blobby(int, const std::vector<int>&, const std::vector<float>&,
+                          const std::vector<std::string>&, const ParamList&, const FileLoc& loc) {
+    diagnostics_.WarningOnce("Blobby", loc, "Blobby is not supported: skipped");
+}
+
+void SceneBuilder::Procedural(const std::string& name, const std::vector<std::string>&,
+                              const std::vector<float>&, const FileLoc& loc) {
+    diagnostics_.WarningOnce("Procedural " + name, loc,
+                             "Procedural \"" + name + "\" is not supported: skipped");
+}
+
+// ---- texture making: not a renderer's job here ----------------------------------------------
+
+void SceneBuilder::MakeTexture(const std::string&, const std::string&, const std::string&,
+                               const std::string&, const std::string&, float, float,
+                               const ParamList&, const FileLoc& loc) {
+    IgnoredRequest("MakeTexture (use maketx)", loc);
+}
+
+void SceneBuilder::MakeLatLongEnvironment(const std::string&, const std::string&,
+                                          const std::string&, float, float, const ParamList&,
+                                          const FileLoc& loc) {
+    IgnoredRequest("MakeLatLongEnvironment (use maketx)", loc);
+}
+
+void SceneBuilder::MakeCubeFaceEnvironment(const std::vector<std::string>&, const std::string&,
+                                           float, const std::string&, float, float,
+                                           const ParamList&, const FileLoc& loc) {
+    IgnoredRequest("MakeCubeFaceEnvironment (use maketx)", loc);
+}
+
+void SceneBuilder::MakeShadow(const std::string&, const std::string&, const ParamList&,
+                              const FileLoc& loc) {
+    IgnoredRequest("MakeShadow (shadows are ray traced)", loc);
+}
+
+void SceneBuilder::ErrorHandler(const std::string&, const FileLoc& loc) {
+    IgnoredRequest("ErrorHandler", loc);
+}
+
+}  // namespace gonio
+namespace gonio {
+void SceneBuilder::NuPatch(int, int, const std::vector<float>&, float, float, int, int,
+                           const std::vector<float>&, float, float, const ParamList&,
+                           const FileLoc& loc) {
+    diagnostics_.Error(loc, "NuPatch: TEMPORARY");
+}
+void SceneBuilder::SubdivisionMesh(const std::string&, const std::vector<int>&,
+                                   const std::vector<int>&, const std::vector<std::string>&,
+                                   const std::vector<int>&, const std::vector<int>&,
+                                   const std::vector<float>&, const ParamList&,
+                                   const FileLoc& loc) {
+    diagnostics_.Error(loc, "SubdivisionMesh: TEMPORARY");
+}
+void SceneBuilder::Points(const ParamList&, const FileLoc& loc) {
+    diagnostics_.Error(loc, "Points: TEMPORARY");
+}
+void SceneBuilder::Curves(const std::string&, const std::vector<int>&, const std::string&,
+                          const ParamList&, const FileLoc& loc) {
+    diagnostics_.Error(loc, "Curves: TEMPORARY");
+}
+void SceneBuilder::Geometry(const std::string&, const ParamList&, const FileLoc& loc) {
+    diagnostics_.Error(loc, "Geometry: TEMPORARY");
+}
+}  // namespace gonio

@@ -1,0 +1,64 @@
+#pragma once
+// Everything one frame needs, as the scene builder hands it over at WorldEnd: frozen options,
+// the lights, and every primitive converted to a plain geometric description (shape.h) with its
+// attributes and transform. The ray tracer and the photon tracer start from here.
+
+#include <Imath/ImathMatrix.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "geometry/shape.h"
+#include "scene/attributes.h"
+#include "scene/options.h"
+
+namespace gonio {
+
+// A quadric and its primitive variables (constant/uniform: one value, varying/vertex: four, at
+// the (u,v) corners (0,0) (1,0) (0,1) (1,1)).
+struct QuadricShape {
+    std::shared_ptr<const Quadric> quadric;
+    PrimVarSet vars;
+};
+
+using ShapeGeometry = std::variant<TriangleMesh, QuadricShape, SubdivisionCage, CurveSet, PointSet>;
+
+struct SceneShape {
+    ShapeGeometry geometry;
+    std::shared_ptr<const Attributes> attributes;
+    // World (or, inside an object definition, definition) space from the shape's object space.
+    M44f worldFromObject;
+    // Reverse the outward normal (Orientation "inside", or "lh"/"rh" against the handedness).
+    bool flipNormals = false;
+    FileLoc loc;
+};
+
+struct ObjectDefinition {
+    std::vector<SceneShape> shapes;
+};
+
+struct ObjectInstanceUse {
+    std::shared_ptr<const ObjectDefinition> definition;
+    M44f worldFromDefinition;
+};
+
+struct SceneLight {
+    LightInstance light;
+    bool onByDefault = true;
+};
+
+struct Frame {
+    int number = 0;
+    Options options;
+    std::vector<SceneLight> lights;
+    std::vector<SceneShape> shapes;
+    std::vector<ObjectInstanceUse> instances;
+    // CoordinateSystem names: world space from the named space.
+    std::map<std::string, M44f> namedSpaces;
+    std::string sceneFile;  // the RIB file, for resolving relative output and search paths
+};
+
+}  // namespace gonio

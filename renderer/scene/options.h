@@ -1,0 +1,54 @@
+#pragma once
+// The options of RISpec §4.1 as they stand at WorldBegin, which freezes them for the frame.
+
+#include <Imath/ImathMatrix.h>
+
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "rib/file_loc.h"
+#include "rib/param_list.h"
+
+namespace gonio {
+
+struct DisplayRequest {
+    std::string name, type, mode;
+    ParamList params;
+    FileLoc loc;
+};
+
+struct QuantizeSetting {
+    int one = 255, min = 0, max = 255;
+    float dither = 0.5f;
+};
+
+struct Options {
+    // Camera and image.
+    int xres = 640, yres = 480;  // RISpec leaves the default to the device; Aqsis uses 640x480
+    float pixelAspect = 1;
+    float frameAspect = 0;       // 0: derived from the format
+    bool screenWindowSet = false;
+    float screenWindow[4] = {-1, 1, -1, 1};  // left right bottom top
+    float cropWindow[4] = {0, 1, 0, 1};      // xmin xmax ymin ymax (NDC)
+    std::string projection = "orthographic";
+    float fov = 90;
+    float nearClip = 1e-10f, farClip = std::numeric_limits<float>::infinity();
+    float fstop = std::numeric_limits<float>::infinity(), focalLength = 0, focalDistance = 0;
+    float shutterOpen = 0, shutterClose = 0;
+    float xsamples = 2, ysamples = 2;
+    std::string filterName = "gaussian";
+    float filterWidth[2] = {2, 2};
+    float gain = 1, gamma = 1;
+    QuantizeSetting colorQuantize, depthQuantize{0, 0, 0, 0};
+    std::vector<DisplayRequest> displays;
+    int colorComponents = 3;  // ColorSamples
+    std::string hider = "hidden";
+    // The transform current at WorldBegin: camera space from world space (RIB row vectors).
+    Imath::M44f cameraFromWorld;
+    // Every Option request by name, merged (searchpath, BRDFLight, statistics, ...).
+    std::map<std::string, ParamList> user;
+};
+
+}  // namespace gonio

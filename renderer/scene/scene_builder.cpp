@@ -1,0 +1,223 @@
+#include "scene/scene_builder.h"
+
+#include "scene/scene_builder_state.h"
+
+namespace gonio {
+namespace {
+
+const char* BlockName(int block) {
+    static const char* const kNames[] = {"Frame",  "World",  "Attribute", "Transform",
+                                         "Object", "Motion", "Solid"};
+    return kNames[block];
+}
+
+std::string HandleText(const RtHandle& handle) {
+    return handle.isString ? "\"" + handle.text + "\"" : handle.text;
+}
+
+}  // namespace
+
+SceneBuilder::SceneBuilder(std::string sceneFile, Diagnostics& diagnostics, FrameHandler onFrame)
+    : sceneFile_(std::move(sceneFile)),
+      diagnostics_(diagnostics),
+      onFrame_(std::move(onFrame)),
+      state_(std::make_unique<State>()) {
+    state_->attributes.ubasis = state_->attributes.vbasis = *NamedBasis("bezier");
+}
+
+SceneBuilder::~SceneBuilder() = default;
+
+void SceneBuilder::Finish(const FileLoc& endOfInput) {
+    for (size_t i = state_->blocks.size(); i-- > 0;)
+        diagnostics_.Error(state_->blockLocs[i],
+                           std::string(BlockName(static_cast<int>(state_->blocks[i]))) +
+                               "Begin is never closed (input ends at " + endOfInput.ToString() +
+                               ")");
+}
+
+// ---- scope checks ---------------------------------------------------------------------------
+
+bool SceneBuilder::RequireWorld(const char* request, const FileLoc& loc) {
+    if (state_->inWorld) return true;
+    diagnostics_.Error(loc, std::string(request) + " is only valid inside WorldBegin/WorldEnd");
+    return false;
+}
+
+bool SceneBuilder::RequireOptions(const char* request, const FileLoc& loc) {
+    if (!state_->inWorld) return true;
+    diagnostics_.Error(loc, std::string(request) +
+                                " is an option and is not valid inside WorldBegin/WorldEnd");
+    return false;
+}
+
+void SceneBuilder::PushBlock(Block block, const FileLoc& loc) {
+    state_->blocks.push_back(block);
+    state_->blockLocs.push_back(loc);
+}
+
+bool SceneBuilder::PopBlock(Block block, const char* request, const FileLoc& loc) {
+    if (state_->blocks.empty() || state_->blocks.back() != block) {
+        const std::string open =
+            state_->blocks.empty()
+                ? std::string("no block is open")
+                : std::string(BlockName(static_cast<int>(state_->blocks.back()))) + "Begin at " +
+                      state_->blockLocs.back().ToString() + " is still open";
+        diagnostics_.Error(loc, std::string(request) + " does not match: " + open);
+        return false;
+    }
+    state_->blocks.pop_back();
+    state_->blockLocs.pop_back();
+    return true;
+}
+
+void SceneBuilder::IgnoredRequest(const char* request, const FileLoc& loc) {
+    diagnostics_.NoteOnce(request, loc,
+                          std::string(request) + " is accepted and ignored by this ray tracer");
+}
+
+// ---- block structure ------------------------------------------------------------------------
+
+void SceneBuilder::FrameBegin(int frame, const FileLoc& loc) {
+    if (!RequireOptions("FrameBegin", loc)) return;
+    PushBlock(Block::Frame, loc);
+    state_->frameNumber = frame;
+    state_->savedOptions.push_back(state_->options);
+    state_->savedAttributes.push_back(state_->attributes);
+    state_->savedTransforms.push_back(state_->transform);
+}
+
+void SceneBuilder::FrameEnd(const FileLoc& loc) {
+    if (!PopBlock(Block::Frame, "FrameEnd", loc)) return;
+    state_->options = state_->savedOptions.back();
+    state_->savedOptions.pop_back();
+    state_->attributes = state_->savedAttributes.back();
+    state_->savedAttributes.pop_back();
+    state_->transform = state_->savedTransforms.back();
+    state_->savedTransforms.pop_back();
+}
+
+void SceneBuilder::WorldBegin(const FileLoc& loc) {
+    if (!RequireOptions("WorldBegin", loc)) return;
+    PushBlock(Block::World, loc);
+    state_->savedAttributes.push_back(state_->attributes);
+    state_->savedTransforms.push_back(state_->transform);
+    state_->options.cameraFromWorld = state_->transform;
+    state_->inWorld = true;
+    state_->frame = Frame();
+    state_->frame.number = state_->frameNumber;
+    state_->frame.options = state_->options;
+    state_->frame.sceneFile = sceneFile_;
+    // Spaces named before WorldBegin were relative to camera space; re-express them in world.
+    const M44f worldFromCamera = state_->transform.inverse();
+    for (const auto& [name, m] : state_->namedSpaces)
+        state_->frame.namedSpaces[name] = m * worldFromCamera;
+    state_->frame.namedSpaces["camera"] = worldFromCamera;
+    state_->transform = M44f();
+    state_->lightHandles.clear();
+}
+
+void SceneBuilder::WorldEnd(const FileLoc& loc) {
+    if (!PopBlock(Block::World, "WorldEnd", loc)) return;
+    state_->inWorld = false;
+    state_->attributes = state_->savedAttributes.back();
+    state_->savedAttributes.pop_back();
+    state_->transform = state_->savedTransforms.back();
+    state_->savedTransforms.pop_back();
+    if (onFrame_) onFrame_(state_->frame);
+    state_->frame = Frame();
+}
+
+void SceneBuilder::AttributeBegin(const FileLoc& loc) {
+    PushBlock(Block::Attribute, loc);
+    state_->savedAttributes.push_back(state_->attributes);
+    state_->savedTransforms.push_back(state_->transform);
+}
+
+void SceneBuilder::AttributeEnd(const FileLoc& loc) {
+    if (!PopBlock(Block::Attribute, "AttributeEnd", loc)) return;
+    state_->attributes = state_->savedAttributes.back();
+    state_->savedAttributes.pop_back();
+    state_->transform = state_->savedTransforms.back();
+    state_->savedTransforms.pop_back();
+}
+
+void SceneBuilder::TransformBegin(const FileLoc& loc) {
+    PushBlock(Block::Transform, loc);
+    state_->savedTransforms.push_back(state_->transform);
+}
+
+void SceneBuilder::TransformEnd(const FileLoc& loc) {
+    if (!PopBlock(Block::Transform, "TransformEnd", loc)) return;
+    state_->transform = state_->savedTransforms.back();
+    state_->savedTransforms.pop_back();
+}
+
+// Shapes inside ObjectBegin/End are recorded relative to the transform current at ObjectBegin;
+// ObjectInstance places the definition with the transform current at the instance.
+void SceneBuilder::ObjectBegin(const RtHandle& handle, const FileLoc& loc) {
+    if (state_->openObject) {
+        diagnostics_.Error(loc, "ObjectBegin inside another ObjectBegin block");
+        return;
+    }
+    PushBlock(Block::Object, loc);
+    state_->savedAttributes.push_back(state_->attributes);
+    state_->savedTransforms.push_back(state_->transform);
+    state_->transform = M44f();
+    state_->openObject = std::make_shared<ObjectDefinition>();
+    state_->openObjectHandle = handle.text;
+}
+
+void SceneBuilder::ObjectEnd(const FileLoc& loc) {
+    if (!PopBlock(Block::Object, "ObjectEnd", loc)) return;
+    state_->objects[state_->openObjectHandle] = std::move(state_->openObject);
+    state_->openObject.reset();
+    state_->attributes = state_->savedAttributes.back();
+    state_->savedAttributes.pop_back();
+    state_->transform = state_->savedTransforms.back();
+    state_->savedTransforms.pop_back();
+}
+
+void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
+    auto it = state_->objects.find(handle.text);
+    if (it == state_->objects.end()) {
+        diagnostics_.Error(loc, "ObjectInstance: no object was defined with handle " +
+                                    HandleText(handle));
+        return;
+    }
+    if (state_->openObject) {
+        // An instance inside a definition: copy its shapes, composed with the transform.
+        for (SceneShape shape : it->second->shapes) {
+            shape.worldFromObject = shape.worldFromObject * state_->transform;
+            state_->openObject->shapes.push_back(std::move(shape));
+        }
+        return;
+    }
+    if (!RequireWorld("ObjectInstance", loc)) return;
+    state_->frame.instances.push_back({it->second, state_->transform});
+}
+
+// Motion blocks: the first sample of each moving request is used (no motion blur yet).
+void SceneBuilder::MotionBegin(const std::vector<float>&, const FileLoc& loc) {
+    PushBlock(Block::Motion, loc);
+    state_->motionRequestCount = 0;
+    diagnostics_.NoteOnce("MotionBegin", loc,
+                          "motion blur is not rendered: each MotionBegin block uses its first "
+                          "sample");
+}
+
+void SceneBuilder::MotionEnd(const FileLoc& loc) {
+    if (!PopBlock(Block::Motion, "MotionEnd", loc)) return;
+    state_->motionRequestCount = -1;
+}
+
+void SceneBuilder::SolidBegin(const std::string& operation, const FileLoc& loc) {
+    PushBlock(Block::Solid, loc);
+    if (operation != "primitive")
+        diagnostics_.WarningOnce("SolidBegin", loc,
+                                 "CSG (SolidBegin \"" + operation +
+                                     "\") is not supported: the solids are rendered as a union");
+}
+
+void SceneBuilder::SolidEnd(const FileLoc& loc) { PopBlock(Block::Solid, "SolidEnd", loc); }
+
+}  // namespace gonio

@@ -1,0 +1,218 @@
+#pragma once
+// The RiTarget that keeps the RenderMan graphics state (options, attribute and transform stacks,
+// object definitions, lights) and turns every primitive into a SceneShape. At each WorldEnd it
+// hands the finished Frame to a callback: the image renderer or the photon tracer.
+// Scope rules (options only outside the world, primitives only inside, balanced blocks) are
+// checked here and reported with the request's location.
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/geometry_result.h"
+#include "rib/declarations.h"
+#include "rib/diagnostics.h"
+#include "rib/ri_target.h"
+#include "scene/frame.h"
+
+namespace gonio {
+
+class SceneBuilder : public RiTarget {
+  public:
+    using FrameHandler = std::function<void(const Frame&)>;
+
+    SceneBuilder(std::string sceneFile, Diagnostics& diagnostics, FrameHandler onFrame);
+    ~SceneBuilder() override;
+
+    // Reports blocks left open at the end of the input.
+    void Finish(const FileLoc& endOfInput);
+
+    // Block structure (RISpec §4).
+    void FrameBegin(int frame, const FileLoc& loc) override;
+    void FrameEnd(const FileLoc& loc) override;
+    void WorldBegin(const FileLoc& loc) override;
+    void WorldEnd(const FileLoc& loc) override;
+    void AttributeBegin(const FileLoc& loc) override;
+    void AttributeEnd(const FileLoc& loc) override;
+    void TransformBegin(const FileLoc& loc) override;
+    void TransformEnd(const FileLoc& loc) override;
+    void ObjectBegin(const RtHandle& handle, const FileLoc& loc) override;
+    void ObjectEnd(const FileLoc& loc) override;
+    void ObjectInstance(const RtHandle& handle, const FileLoc& loc) override;
+    void MotionBegin(const std::vector<float>& times, const FileLoc& loc) override;
+    void MotionEnd(const FileLoc& loc) override;
+    void SolidBegin(const std::string& operation, const FileLoc& loc) override;
+    void SolidEnd(const FileLoc& loc) override;
+
+    // Options (RISpec §4.1).
+    void Format(int xres, int yres, float pixelAspect, const FileLoc& loc) override;
+    void FrameAspectRatio(float ratio, const FileLoc& loc) override;
+    void ScreenWindow(float left, float right, float bottom, float top,
+                      const FileLoc& loc) override;
+    void CropWindow(float xmin, float xmax, float ymin, float ymax, const FileLoc& loc) override;
+    void Projection(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void Clipping(float nearPlane, float farPlane, const FileLoc& loc) override;
+    void ClippingPlane(float x, float y, float z, float nx, float ny, float nz,
+                       const FileLoc& loc) override;
+    // With no arguments in the RIB, fstop is +infinity (a pinhole camera).
+    void DepthOfField(float fstop, float focalLength, float focalDistance,
+                      const FileLoc& loc) override;
+    void Shutter(float open, float close, const FileLoc& loc) override;
+    void PixelVariance(float variance, const FileLoc& loc) override;
+    void PixelSamples(float xsamples, float ysamples, const FileLoc& loc) override;
+    void PixelFilter(const std::string& name, float xwidth, float ywidth,
+                     const FileLoc& loc) override;
+    void Exposure(float gain, float gamma, const FileLoc& loc) override;
+    void Imager(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void Quantize(const std::string& type, int one, int min, int max, float dither,
+                  const FileLoc& loc) override;
+    void Display(const std::string& name, const std::string& type, const std::string& mode,
+                 const ParamList& params, const FileLoc& loc) override;
+    void Hider(const std::string& type, const ParamList& params, const FileLoc& loc) override;
+    void ColorSamples(const std::vector<float>& nRGB, const std::vector<float>& RGBn,
+                      const FileLoc& loc) override;
+    void RelativeDetail(float relativeDetail, const FileLoc& loc) override;
+    void Option(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+
+    // Attributes (RISpec §4.2).
+    void Color(const std::vector<float>& color, const FileLoc& loc) override;
+    void Opacity(const std::vector<float>& opacity, const FileLoc& loc) override;
+    void TextureCoordinates(const std::vector<float>& st8, const FileLoc& loc) override;
+    void LightSource(const std::string& name, const RtHandle& handle, const ParamList& params,
+                     const FileLoc& loc) override;
+    void AreaLightSource(const std::string& name, const RtHandle& handle, const ParamList& params,
+                         const FileLoc& loc) override;
+    void Illuminate(const RtHandle& light, bool on, const FileLoc& loc) override;
+    void Surface(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void Displacement(const std::string& name, const ParamList& params,
+                      const FileLoc& loc) override;
+    void Atmosphere(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void Interior(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void Exterior(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void ShadingRate(float size, const FileLoc& loc) override;
+    void ShadingInterpolation(const std::string& type, const FileLoc& loc) override;
+    void Matte(bool on, const FileLoc& loc) override;
+    void Bound(const std::vector<float>& bound6, const FileLoc& loc) override;
+    void Detail(const std::vector<float>& bound6, const FileLoc& loc) override;
+    void DetailRange(float minVisible, float lowerTransition, float upperTransition,
+                     float maxVisible, const FileLoc& loc) override;
+    void GeometricApproximation(const std::string& type, float value, const FileLoc& loc) override;
+    void Orientation(const std::string& orientation, const FileLoc& loc) override;
+    void ReverseOrientation(const FileLoc& loc) override;
+    void Sides(int sides, const FileLoc& loc) override;
+    void Attribute(const std::string& name, const ParamList& params, const FileLoc& loc) override;
+    void Basis(const RtBasis& ubasis, int ustep, const RtBasis& vbasis, int vstep,
+               const FileLoc& loc) override;
+    void TrimCurve(const std::vector<int>& ncurves, const std::vector<int>& order,
+                   const std::vector<float>& knot, const std::vector<float>& min,
+                   const std::vector<float>& max, const std::vector<int>& n,
+                   const std::vector<float>& u, const std::vector<float>& v,
+                   const std::vector<float>& w, const FileLoc& loc) override;
+
+    // Transformations (RISpec §4.3).
+    void Identity(const FileLoc& loc) override;
+    void Transform(const RtMatrix& m, const FileLoc& loc) override;
+    void ConcatTransform(const RtMatrix& m, const FileLoc& loc) override;
+    void Perspective(float fov, const FileLoc& loc) override;
+    void Translate(float dx, float dy, float dz, const FileLoc& loc) override;
+    void Rotate(float angle, float dx, float dy, float dz, const FileLoc& loc) override;
+    void Scale(float sx, float sy, float sz, const FileLoc& loc) override;
+    void Skew(float angle, float dx1, float dy1, float dz1, float dx2, float dy2, float dz2,
+              const FileLoc& loc) override;
+    void CoordinateSystem(const std::string& space, const FileLoc& loc) override;
+    void ScopedCoordinateSystem(const std::string& space, const FileLoc& loc) override;
+    void CoordSysTransform(const std::string& space, const FileLoc& loc) override;
+
+    // Geometric primitives (RISpec §5).
+    void Polygon(const ParamList& params, const FileLoc& loc) override;
+    void GeneralPolygon(const std::vector<int>& nverts, const ParamList& params,
+                        const FileLoc& loc) override;
+    void PointsPolygons(const std::vector<int>& nverts, const std::vector<int>& verts,
+                        const ParamList& params, const FileLoc& loc) override;
+    void PointsGeneralPolygons(const std::vector<int>& nloops, const std::vector<int>& nverts,
+                               const std::vector<int>& verts, const ParamList& params,
+                               const FileLoc& loc) override;
+    void Patch(const std::string& type, const ParamList& params, const FileLoc& loc) override;
+    void PatchMesh(const std::string& type, int nu, const std::string& uwrap, int nv,
+                   const std::string& vwrap, const ParamList& params, const FileLoc& loc) override;
+    void NuPatch(int nu, int uorder, const std::vector<float>& uknot, float umin, float umax,
+                 int nv, int vorder, const std::vector<float>& vknot, float vmin, float vmax,
+                 const ParamList& params, const FileLoc& loc) override;
+    void SubdivisionMesh(const std::string& scheme, const std::vector<int>& nverts,
+                         const std::vector<int>& verts, const std::vector<std::string>& tags,
+                         const std::vector<int>& nargs, const std::vector<int>& intargs,
+                         const std::vector<float>& floatargs, const ParamList& params,
+                         const FileLoc& loc) override;
+    void Sphere(float radius, float zmin, float zmax, float thetamax, const ParamList& params,
+                const FileLoc& loc) override;
+    void Cone(float height, float radius, float thetamax, const ParamList& params,
+              const FileLoc& loc) override;
+    void Cylinder(float radius, float zmin, float zmax, float thetamax, const ParamList& params,
+                  const FileLoc& loc) override;
+    void Hyperboloid(float x1, float y1, float z1, float x2, float y2, float z2, float thetamax,
+                     const ParamList& params, const FileLoc& loc) override;
+    void Paraboloid(float rmax, float zmin, float zmax, float thetamax, const ParamList& params,
+                    const FileLoc& loc) override;
+    void Disk(float height, float radius, float thetamax, const ParamList& params,
+              const FileLoc& loc) override;
+    void Torus(float majorRadius, float minorRadius, float phimin, float phimax, float thetamax,
+               const ParamList& params, const FileLoc& loc) override;
+    void Points(const ParamList& params, const FileLoc& loc) override;
+    void Curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                const ParamList& params, const FileLoc& loc) override;
+    void Blobby(int nleaf, const std::vector<int>& code, const std::vector<float>& floats,
+                const std::vector<std::string>& strings, const ParamList& params,
+                const FileLoc& loc) override;
+    void Procedural(const std::string& name, const std::vector<std::string>& args,
+                    const std::vector<float>& bound6, const FileLoc& loc) override;
+    void Geometry(const std::string& type, const ParamList& params, const FileLoc& loc) override;
+
+    // External resources (RISpec §7).
+    void MakeTexture(const std::string& picture, const std::string& texture,
+                     const std::string& swrap, const std::string& twrap, const std::string& filter,
+                     float swidth, float twidth, const ParamList& params,
+                     const FileLoc& loc) override;
+    void MakeLatLongEnvironment(const std::string& picture, const std::string& texture,
+                                const std::string& filter, float swidth, float twidth,
+                                const ParamList& params, const FileLoc& loc) override;
+    void MakeCubeFaceEnvironment(const std::vector<std::string>& faces, const std::string& texture,
+                                 float fov, const std::string& filter, float swidth, float twidth,
+                                 const ParamList& params, const FileLoc& loc) override;
+    void MakeShadow(const std::string& picture, const std::string& texture, const ParamList& params,
+                    const FileLoc& loc) override;
+    void ErrorHandler(const std::string& handler, const FileLoc& loc) override;
+
+  private:
+    struct State;
+    enum class Block { Frame, World, Attribute, Transform, Object, Motion, Solid };
+
+    bool RequireWorld(const char* request, const FileLoc& loc);
+    // Inside MotionBegin/End only the first request is used: true for the ones to skip.
+    bool SkipMotionSample();
+    bool RequireOptions(const char* request, const FileLoc& loc);
+    void PushBlock(Block block, const FileLoc& loc);
+    bool PopBlock(Block block, const char* request, const FileLoc& loc);
+    void IgnoredRequest(const char* request, const FileLoc& loc);
+    void ConcatTransform(const M44f& m);
+    void SetShader(ShaderInstance* shader, const std::string& name, const ParamList& params,
+                   const FileLoc& loc);
+    int LightIndex(const RtHandle& handle, const FileLoc& loc);
+    // Adds a primitive's shape with the current attributes and transform.
+    void AddShape(ShapeGeometry geometry, const FileLoc& loc);
+    bool TypeVars(const ParamList& params, PrimVarSet* vars);
+    template <class T>
+    void AddGeometry(const char* request, GeometryResult<T> result, const FileLoc& loc);
+    void AddQuadric(const char* request, std::unique_ptr<Quadric> quadric, const ParamList& params,
+                    const FileLoc& loc);
+    bool StartPrimitive(const char* request, const FileLoc& loc);
+
+    std::string sceneFile_;
+    Diagnostics& diagnostics_;
+    FrameHandler onFrame_;
+    Declarations declarations_;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace gonio

@@ -1,0 +1,45 @@
+#pragma once
+// The graphics state behind SceneBuilder, shared by the files that implement its requests
+// (scene_builder.cpp: blocks; builder_options.cpp; builder_attributes.cpp;
+// builder_primitives.cpp). Not for use outside renderer/scene/.
+
+#include <Imath/ImathMatrix.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene/primvar_typing.h"
+#include "scene/scene_builder.h"
+
+namespace gonio {
+
+struct SceneBuilder::State {
+    Options options;
+    std::vector<Options> savedOptions;  // FrameBegin saves, FrameEnd restores
+    Attributes attributes;
+    std::vector<Attributes> savedAttributes;
+    // Object space to the current base space: camera space before WorldBegin, world space
+    // inside it (the camera transform is frozen at WorldBegin).
+    M44f transform;
+    std::vector<M44f> savedTransforms;
+    std::vector<Block> blocks;
+    std::vector<FileLoc> blockLocs;
+    bool inWorld = false;
+    int frameNumber = 0;
+    Frame frame;
+    std::map<std::string, M44f> namedSpaces;  // current base space from the named space
+    std::map<std::string, int> lightHandles;
+    std::map<std::string, std::shared_ptr<ObjectDefinition>> objects;
+    std::shared_ptr<ObjectDefinition> openObject;
+    std::string openObjectHandle;
+    int motionRequestCount = -1;  // requests seen inside a MotionBegin block; -1 outside
+};
+
+inline M44f ToM44f(const RtMatrix& m) {
+    return M44f(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11], m[12],
+                m[13], m[14], m[15]);
+}
+
+}  // namespace gonio

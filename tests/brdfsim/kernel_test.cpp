@@ -1,0 +1,83 @@
+// The kernel and its normalisation: the flat integrals against the thesis's closed forms, the
+// sphere integrals against an independent Monte Carlo estimate, and the in-domain masses.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "kernel.h"
+
+namespace gonio {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(Kernel, PolynomialShape) {
+    EXPECT_DOUBLE_EQ(SplatKernel(0.0), 1.0);
+    EXPECT_NEAR(SplatKernel(1.0 - 1e-9), 0.0, 1e-12);
+    EXPECT_EQ(SplatKernel(1.5), 0.0);
+    // zero slope at both ends (thesis §4.2.1)
+    EXPECT_NEAR((SplatKernel(1e-4) - 1.0) / 1e-4, 0.0, 1e-3);
+    EXPECT_NEAR((SplatKernel(1.0) - SplatKernel(1.0 - 1e-4)) / 1e-4, 0.0, 1e-3);
+    EXPECT_NEAR(SplatKernelSquared(0.25f), SplatKernel(0.5), 1e-6);
+}
+
+TEST(Kernel, FlatMassesMatchThesisClosedForms) {
+    for (double r : {0.1, 0.3, 0.9}) {
+        const double r4 = std::pow(r, 4);
+        EXPECT_NEAR(FlatKernelMass4D(r, Norm::kL1) / (37.0 / 1620 * kPi * kPi * r4), 1.0, 1e-9);
+        EXPECT_NEAR(FlatKernelMass4D(r, Norm::kL2) / (37.0 / 540 * kPi * kPi * r4), 1.0, 1e-9);
+        EXPECT_NEAR(FlatKernelMass4D(r, Norm::kLinf) / (37.0 / 270 * kPi * kPi * r4), 1.0, 1e-9);
+        EXPECT_NEAR(FlatKernelMass3D(r, Norm::kL2) / (736 * kPi / 2835 * r * r * r), 1.0, 1e-9);
+    }
+}
+
+TEST(Kernel, SphereMassIsBelowFlatAsDesignSays) {
+    // DESIGN.md: planar integrals overstate the mass by 0.6% at R = 0.3 and 6.5% at R = 1 (L2).
+    const double at03 = FlatKernelMass4D(0.3, Norm::kL2) / SphereKernelMass4D(0.3, Norm::kL2);
+    EXPECT_NEAR(at03 - 1.0, 0.006, 0.0015);
+    EXPECT_LT(SphereKernelMass4D(0.1, Norm::kL2), FlatKernelMass4D(0.1, Norm::kL2));
+}
+
+// Monte Carlo over sphere × sphere: points uniform on each whole sphere (density 1/4π each).
+double MonteCarloMass4D(double radius, Norm norm, int samples) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double sum = 0.0;
+    for (int i = 0; i < samples; ++i) {
+        // distance from the pole of a uniform point on the sphere: cos d uniform in [cos R, 1]
+        // is enough, since the kernel vanishes beyond R; weight by that cap's share.
+        const double capShare = (1 - std::cos(radius)) / 2;
+        const double d1 = std::acos(1 - u(rng) * (1 - std::cos(radius)));
+        const double d2 = std::acos(1 - u(rng) * (1 - std::cos(radius)));
+        sum += SplatKernel(CombineDistances(norm, d1, d2) / radius) * capShare * capShare;
+    }
+    return sum / samples * 16 * kPi * kPi;
+}
+
+TEST(Kernel, SphereMassAgreesWithMonteCarlo) {
+    for (Norm norm : {Norm::kL1, Norm::kL2, Norm::kLinf}) {
+        const double exact = SphereKernelMass4D(0.7, norm);
+        EXPECT_NEAR(MonteCarloMass4D(0.7, norm, 400000) / exact, 1.0, 0.01) << NormName(norm);
+    }
+}
+
+TEST(Kernel, InDomainMassIsFullAwayFromTheHorizonAndHalfOnIt) {
+    const double r = 0.3;
+    const double full4 = SphereKernelMass4D(r, Norm::kL2);
+    EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, false, 0.5, 0.5) / full4, 1.0, 1e-6);
+    EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, false, 0.5, kPi / 2) / full4, 0.5, 1e-3);
+    EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, false, kPi / 2, kPi / 2) / full4, 0.25, 1e-3);
+    const double full3 = SphereKernelMass3D(r, Norm::kL2);
+    EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, true, 0.0, 0.5) / full3, 0.5, 1e-3);
+    EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, true, 0.7, 0.5) / full3, 1.0, 1e-6);
+}
+
+TEST(Kernel, ParsesNormNames) {
+    EXPECT_EQ(ParseNorm("l1"), Norm::kL1);
+    EXPECT_EQ(ParseNorm("linf"), Norm::kLinf);
+    EXPECT_THROW(ParseNorm("l3"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace gonio

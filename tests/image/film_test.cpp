@@ -1,0 +1,221 @@
+#include "image/film.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <limits>
+
+namespace gonio {
+namespace {
+
+PixelFilter MakeFilter(const std::string& name, float xwidth, float ywidth) {
+    std::string error;
+    auto filter = PixelFilter::FromRib(name, xwidth, ywidth, error);
+    EXPECT_TRUE(filter.has_value()) << error;
+    return filter.value_or(PixelFilter());
+}
+
+FilmSpec SmallSpec(int xres, int yres, int xsamples, int ysamples, int channels) {
+    return FilmSpec::FromCropWindow(xres, yres, 0, 1, 0, 1, xsamples, ysamples, channels);
+}
+
+using SampleValues = std::function<void(int px, int py, int s, float* values)>;
+
+// Stratified (cell-centred, jittered by a fixed pattern) samples over the whole pixel range.
+void FillFilm(Film& film, const SampleValues& valuesOf) {
+    const FilmSpec& spec = film.Spec();
+    Imath::Box2i range = film.PixelRange();
+    std::vector<float> values(spec.channels);
+    for (int py = range.min.y; py <= range.max.y; ++py) {
+        for (int px = range.min.x; px <= range.max.x; ++px) {
+            for (int sy = 0; sy < spec.ysamples; ++sy) {
+                for (int sx = 0; sx < spec.xsamples; ++sx) {
+                    int s = sy * spec.xsamples + sx;
+                    float jx = 0.25f + 0.5f * ((px * 7 + py * 3 + s) % 5) / 5.0f;
+                    float jy = 0.25f + 0.5f * ((px * 2 + py * 5 + s) % 7) / 7.0f;
+                    valuesOf(px, py, s, values.data());
+                    film.SetSample(px, py, s, px + (sx + jx) / spec.xsamples,
+                                   py + (sy + jy) / spec.ysamples, values.data());
+                }
+            }
+        }
+    }
+}
+
+TEST(FilmSpec, CropWindowRoundsAsRiSpec) {
+    FilmSpec left = FilmSpec::FromCropWindow(640, 480, 0.0f, 0.5f, 0.0f, 1.0f, 2, 2, 5);
+    FilmSpec right = FilmSpec::FromCropWindow(640, 480, 0.5f, 1.0f, 0.0f, 1.0f, 2, 2, 5);
+    EXPECT_EQ(left.xmin, 0);
+    EXPECT_EQ(left.xmax, 319);
+    EXPECT_EQ(right.xmin, 320);
+    EXPECT_EQ(right.xmax, 639);
+    EXPECT_EQ(right.ymin, 0);
+    EXPECT_EQ(right.ymax, 479);
+    // Abutting windows at a fraction that falls inside a pixel still tile without gap or overlap.
+    FilmSpec a = FilmSpec::FromCropWindow(100, 100, 0.0f, 0.333f, 0.25f, 0.755f, 1, 1, 5);
+    FilmSpec b = FilmSpec::FromCropWindow(100, 100, 0.333f, 1.0f, 0.755f, 1.0f, 1, 1, 5);
+    EXPECT_EQ(a.xmax + 1, b.xmin);
+    EXPECT_EQ(a.xmax, 33);
+    EXPECT_EQ(a.ymin, 25);
+    EXPECT_EQ(a.ymax + 1, b.ymin);
+    EXPECT_EQ(a.WindowWidth(), 34);
+}
+
+TEST(FilmSpec, DepthChannelOnlyWhenThereIsOne) {
+    EXPECT_EQ(SmallSpec(4, 4, 1, 1, 5).depthChannel, kChannelZ);
+    EXPECT_EQ(SmallSpec(4, 4, 1, 1, 4).depthChannel, -1);
+}
+
+TEST(Film, PixelRangeAddsTheFilterMargin) {
+    FilmSpec spec = FilmSpec::FromCropWindow(64, 48, 0.25f, 0.5f, 0.5f, 1.0f, 2, 2, 5);
+    Imath::Box2i box = Film(spec, MakeFilter("box", 1, 1)).PixelRange();
+    EXPECT_EQ(box.min, Imath::V2i(16, 24));
+    EXPECT_EQ(box.max, Imath::V2i(31, 47));
+    // Radius 1: samples up to 1 pixel from a border pixel's centre lie in the next pixel out.
+    Imath::Box2i gaussian = Film(spec, MakeFilter("gaussian", 2, 2)).PixelRange();
+    EXPECT_EQ(gaussian.min, Imath::V2i(15, 23));
+    EXPECT_EQ(gaussian.max, Imath::V2i(32, 48));  // beyond the frame: rendered too
+    Imath::Box2i wide = Film(spec, MakeFilter("catmull-rom", 4, 3)).PixelRange();
+    EXPECT_EQ(wide.min, Imath::V2i(14, 23));
+    EXPECT_EQ(wide.max, Imath::V2i(33, 48));
+}
+
+class ConstantField : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ConstantField, ResolvesToTheConstantEverywhere) {
+    const float constant[5] = {0.25f, 0.5f, 2.0f, 1.0f, 7.0f};
+    for (auto crop : {std::array<float, 4>{0, 1, 0, 1}, std::array<float, 4>{0.3f, 0.7f, 0, 0.2f},
+                      std::array<float, 4>{0.9f, 1, 0.8f, 1}}) {
+        FilmSpec spec =
+            FilmSpec::FromCropWindow(20, 15, crop[0], crop[1], crop[2], crop[3], 3, 2, 5);
+        Film film(spec, MakeFilter(GetParam(), 3, 2.5f));
+        FillFilm(film, [&](int, int, int, float* v) { std::copy(constant, constant + 5, v); });
+        Image image = film.Resolve();
+        ASSERT_EQ(image.width, spec.WindowWidth());
+        ASSERT_EQ(image.height, spec.WindowHeight());
+        EXPECT_EQ(image.xorigin, spec.xmin);
+        EXPECT_EQ(image.yorigin, spec.ymin);
+        EXPECT_EQ(image.fullWidth, 20);
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                for (int c = 0; c < 5; ++c)
+                    ASSERT_NEAR(image.At(x, y)[c], constant[c], 1e-5)
+                        << GetParam() << " pixel " << x << "," << y << " channel " << c;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Film, ConstantField,
+                         ::testing::Values("box", "triangle", "gaussian", "catmull-rom", "sinc",
+                                           "disk", "mitchell"),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             for (char& ch : name)
+                                 if (ch == '-') ch = '_';
+                             return name;
+                         });
+
+// One sample per pixel at its centre: a single bright sample reaches each pixel with the filter's
+// weight at their offset, divided by the (here equal for every pixel) sum of weights.
+TEST(Film, SingleSampleSpreadsAsTheFilterSays) {
+    PixelFilter filter = MakeFilter("gaussian", 3, 3);
+    FilmSpec spec = SmallSpec(9, 9, 1, 1, 4);
+    Film film(spec, filter);
+    Imath::Box2i range = film.PixelRange();
+    for (int py = range.min.y; py <= range.max.y; ++py) {
+        for (int px = range.min.x; px <= range.max.x; ++px) {
+            float v[4] = {0, 0, 0, 0};
+            if (px == 4 && py == 4) v[0] = 1.0f;
+            film.SetSample(px, py, 0, px + 0.5f, py + 0.5f, v);
+        }
+    }
+    double weightSum = 0.0;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) weightSum += filter.Evaluate(float(i), float(j));
+    Image image = film.Resolve();
+    double total = 0.0;
+    for (int y = 0; y < 9; ++y) {
+        for (int x = 0; x < 9; ++x) {
+            float expected = filter.Evaluate(float(x - 4), float(y - 4)) / float(weightSum);
+            if (std::abs(x - 4) > 1 || std::abs(y - 4) > 1) expected = 0.0f;
+            EXPECT_NEAR(image.At(x, y)[0], expected, 1e-6) << x << "," << y;
+            total += image.At(x, y)[0];
+        }
+    }
+    EXPECT_NEAR(total, 1.0, 1e-5);  // the sample's energy is kept
+    EXPECT_GT(image.At(4, 3)[0], image.At(3, 3)[0]);
+}
+
+TEST(Film, CancelledWeightsFallBackToTheNearestSample) {
+    PixelFilter filter = MakeFilter("catmull-rom", 4, 4);
+    // Find the offset whose weight cancels the negative lobe at 1.5 pixels.
+    float lo = 0.5f, hi = 1.0f;
+    for (int i = 0; i < 60; ++i) {
+        float mid = 0.5f * (lo + hi);
+        (filter.Evaluate(mid, 0) > -filter.Evaluate(1.5f, 0) ? lo : hi) = mid;
+    }
+    FilmSpec spec = SmallSpec(8, 1, 1, 1, 4);
+    Film film(spec, filter);
+    const float cx = 3.5f;  // centre of pixel 3
+    float near[4] = {10, 10, 10, 1}, far[4] = {20, 20, 20, 1};
+    float xNear = cx + lo, xFar = cx - 1.5f;
+    film.SetSample(int(std::floor(xNear)), 0, 0, xNear, 0.5f, near);
+    film.SetSample(int(std::floor(xFar)), 0, 0, xFar, 0.5f, far);
+    Image image = film.Resolve();
+    EXPECT_FLOAT_EQ(image.At(3, 0)[0], 10.0f);
+    // A pixel that no set sample reaches is black.
+    EXPECT_FLOAT_EQ(image.At(7, 0)[0], 0.0f);
+}
+
+TEST(Film, DepthIsTheNearestOfThePixelsOwnSamples) {
+    const float inf = std::numeric_limits<float>::infinity();
+    FilmSpec spec = SmallSpec(3, 1, 2, 2, 5);
+    Film film(spec, MakeFilter("gaussian", 2, 2));
+    FillFilm(film, [&](int px, int, int s, float* v) {
+        v[0] = v[1] = v[2] = v[3] = 1.0f;
+        if (px == 0) v[4] = s == 2 ? 3.0f : (s == 1 ? 5.0f : inf);
+        if (px == 1) v[4] = inf;  // nothing hit
+        if (px == 2) v[4] = 1.0f + s;
+    });
+    Image image = film.Resolve();
+    EXPECT_FLOAT_EQ(image.At(0, 0)[kChannelZ], 3.0f);
+    EXPECT_EQ(image.At(1, 0)[kChannelZ], inf);
+    EXPECT_FLOAT_EQ(image.At(2, 0)[kChannelZ], 1.0f);
+    EXPECT_FLOAT_EQ(image.At(1, 0)[kChannelR], 1.0f);
+}
+
+TEST(Film, ResolveIsIdenticalWhateverTheThreadCount) {
+    FilmSpec spec = FilmSpec::FromCropWindow(96, 64, 0.1f, 0.9f, 0, 1, 3, 3, 6);
+    Film film(spec, MakeFilter("catmull-rom", 4, 4));
+    FillFilm(film, [](int px, int py, int s, float* v) {
+        for (int c = 0; c < 6; ++c)
+            v[c] = std::sin(0.37f * px + 0.91f * py + 1.3f * s + c) * 100.0f + 1.0f / (1 + c);
+    });
+    Image one, many;
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one = film.Resolve();
+    }
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 8);
+        many = film.Resolve();
+    }
+    ASSERT_EQ(one.pixels.size(), many.pixels.size());
+    EXPECT_EQ(std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(float)),
+              0);
+}
+
+TEST(Film, SamplesOutsideThePixelRangeAreIgnored) {
+    FilmSpec spec = SmallSpec(4, 4, 1, 1, 4);
+    Film film(spec, MakeFilter("box", 1, 1));
+    float v[4] = {1, 1, 1, 1};
+    film.SetSample(-5, 0, 0, -4.5f, 0.5f, v);
+    film.SetSample(0, 0, 3, 0.5f, 0.5f, v);  // no sample 3 at 1x1
+    Image image = film.Resolve();
+    EXPECT_FLOAT_EQ(image.At(0, 0)[0], 0.0f);
+}
+
+}  // namespace
+}  // namespace gonio
