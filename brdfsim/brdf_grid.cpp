@@ -54,6 +54,7 @@ BrdfGrid::BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
     const SplatSet& s = *splats_;
     const double radius = SlackRadius(s.Params().radius);
     const std::size_t numOut = grid_.NumCells();
+    const CellFinder finder(grid_, radius);
     auto emit = [&](std::size_t k, const auto& add) {
         std::vector<std::pair<int, double>> inCells, outCells;
         for (int v = 0; v < s.NumImages(); ++v) {
@@ -62,9 +63,9 @@ BrdfGrid::BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
             s.ImageCentre(k, v, &in, &theta, &out);
             inCells.clear();
             outCells.clear();
-            grid_.CellsNear(in, radius, inCells);
+            finder.Near(in, inCells);
             if (inCells.empty()) continue;
-            grid_.CellsNear(out, radius, outCells);
+            finder.Near(out, outCells);
             // Exact in the product domain: the nearest point of a pair of cells is at
             // norm(d_in, d_out), tighter than the thesis's norm-independent assignment.
             for (const auto& [ci, di] : inCells) {
@@ -108,6 +109,7 @@ BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int 
     const double radius = SlackRadius(s.Params().radius);
     const double width = 0.5 * kPi / rings;
     const std::size_t numOut = grid_.NumCells();
+    const CellFinder finder(grid_, radius);
     auto emit = [&](std::size_t k, const auto& add) {
         std::vector<std::pair<int, double>> outCells;
         for (int v = 0; v < s.NumImages(); ++v) {
@@ -116,7 +118,7 @@ BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int 
             s.ImageCentre(k, v, &in, &theta, &out);
             if (theta < -radius || theta > 0.5 * kPi + radius) continue;
             outCells.clear();
-            grid_.CellsNear(out, radius, outCells);
+            finder.Near(out, outCells);
             for (int r = 0; r < rings_; ++r) {
                 const double di = std::max({0.0, r * width - theta, theta - (r + 1) * width});
                 if (di >= radius) continue;

@@ -174,10 +174,7 @@ void ReadHeader(Reader& in, SplatSet& s, int* rings, int* rects, std::uint32_t* 
 void ReadSplats(Reader& in, SplatSet& s) {
     const auto count = in.Value<std::uint64_t>("the splat count");
     if (count > s.photons) in.Fail("more splats than photons");
-    for (std::vector<float>* column :
-         {&s.inX, &s.inY, &s.inZ, &s.thetaIn, &s.outX, &s.outY, &s.outZ}) {
-        *column = in.Array<float>(count, "the splat directions");
-    }
+    s.geometry = in.Array<SplatGeometry>(count, "the splat directions");
     s.weights = in.Array<float>(count * s.ncomps, "the splat weights");
     s.energies = in.Array<float>(count * s.ncomps, "the splat energies");
 }
@@ -280,10 +277,7 @@ void WriteGrd(const std::string& path, const SplatSet& s, int rings, int rects,
         out.Value<std::uint64_t>(s.photons);
         out.Value<double>(s.mass);
         out.Value<std::uint64_t>(s.Size());
-        for (const std::vector<float>* column :
-             {&s.inX, &s.inY, &s.inZ, &s.thetaIn, &s.outX, &s.outY, &s.outZ}) {
-            out.Array(*column);
-        }
+        out.Array(s.geometry);
         out.Array(s.weights);
         out.Array(s.energies);
         out.Value<std::uint64_t>(lists.NumCells());

@@ -22,18 +22,36 @@ public:
 
     // The cell holding unit direction w (z >= 0).
     int CellOf(const Imath::V3f& w) const;
-    // Appends (cell, minimum great-circle distance) for every cell closer than `radius` to the
-    // point `centre` (unit; may lie below the horizon, as mirror images do).
-    void CellsNear(const Imath::V3d& centre, double radius,
-                   std::vector<std::pair<int, double>>& cells) const;
-    // Minimum great-circle distance from `centre` to the cell.
+    // Minimum great-circle distance from the point (θc, φc) to the cell.
     double DistanceToCell(int cell, double thetaC, double phiC) const;
 
 private:
+    friend class CellFinder;
+    void ComputeBoundingCap(int cell);
+    double DistanceToCell(int cell, double thetaC, double phiC, double sinC, double cosC) const;
+
     int bands_ = 0, maxRects_ = 0;
     double bandWidth_ = 0.0;
     std::vector<int> firstCell_;  // bands_ + 1 entries
     std::vector<int> bandOfCell_;
+    // A cap around each cell (centre, cos of its radius) rejects far cells with one dot product.
+    std::vector<Imath::V3d> cellCentre_;
+    std::vector<double> cellRadius_;
+    std::vector<double> bandCos_, bandSin_;  // of the band boundaries
+};
+
+// Finds the cells a splat of a given radius reaches.
+class CellFinder {
+public:
+    CellFinder(const HemisphereGrid& grid, double radius);
+    // Appends (cell, minimum great-circle distance) for every cell closer than the radius to the
+    // point `centre` (unit; may lie below the horizon, as mirror images do).
+    void Near(const Imath::V3d& centre, std::vector<std::pair<int, double>>& cells) const;
+
+private:
+    const HemisphereGrid& grid_;
+    double radius_;
+    std::vector<double> cosReach_;  // per cell: cos(radius + bounding radius), or -2
 };
 
 }  // namespace gonio

@@ -80,19 +80,22 @@ double SupportLimit(Norm norm, double radius, double a) {
 }
 
 // ∫∫ k(norm(a, b) / R) wa(a) wb(b) db da over a in [aLo, aHi] (aLo >= 0), b in [0, R].
+// `panels` sets the accuracy: 16 gives rounding-level masses, 4 is enough for tables that are
+// interpolated anyway.
 double KernelDoubleIntegral(Norm norm, double radius, double aLo, double aHi,
                             const std::function<double(double)>& wa,
-                            const std::function<double(double)>& wb) {
-    return Integrate(aLo, aHi, 16, [&](double a) {
+                            const std::function<double(double)>& wb, int panels = 16) {
+    const int inner = std::max(1, panels / 4);
+    return Integrate(aLo, aHi, panels, [&](double a) {
         const double bMax = SupportLimit(norm, radius, a);
-        auto inner = [&](double b) {
+        auto integrand = [&](double b) {
             return SplatKernel(CombineDistances(norm, a, b) / radius) * wb(b);
         };
         double sum;
         if (norm == Norm::kLinf && a < bMax) {  // max(a, b) has a kink at b = a
-            sum = Integrate(0.0, a, 4, inner) + Integrate(a, bMax, 4, inner);
+            sum = Integrate(0.0, a, inner, integrand) + Integrate(a, bMax, inner, integrand);
         } else {
-            sum = Integrate(0.0, bMax, 4, inner);
+            sum = Integrate(0.0, bMax, inner, integrand);
         }
         return sum * wa(a);
     });
@@ -137,6 +140,7 @@ void CheckRadius(double radius) {
 class InDomainTable {
 public:
     static constexpr int kSize = 49;
+    static constexpr int kPanels = 4;
 
     InDomainTable(double radius, Norm norm, bool isotropic) : values_(kSize * kSize) {
         for (int i = 0; i < kSize; ++i) {
@@ -164,14 +168,14 @@ private:
         auto wb = [&](double b) { return SphereWeight(b) * CircleFractionAbove(cOut, b); };
         if (!isotropic) {
             auto wa = [&](double a) { return SphereWeight(a) * CircleFractionAbove(cIn, a); };
-            return KernelDoubleIntegral(norm, radius, 0.0, radius, wa, wb);
+            return KernelDoubleIntegral(norm, radius, 0.0, radius, wa, wb, kPanels);
         }
         // θ_in offset t keeps the splat inside when cIn + t lies in [0, π/2]; split at the ends.
         const double below = std::min(radius, cIn);           // offsets -t, t in [0, below]
         const double above = std::min(radius, kPi / 2 - cIn);  // offsets +t, t in [0, above]
         auto one = [](double) { return 1.0; };
-        return KernelDoubleIntegral(norm, radius, 0.0, below, one, wb) +
-               KernelDoubleIntegral(norm, radius, 0.0, above, one, wb);
+        return KernelDoubleIntegral(norm, radius, 0.0, below, one, wb, kPanels) +
+               KernelDoubleIntegral(norm, radius, 0.0, above, one, wb, kPanels);
     }
 
     std::vector<double> values_;
@@ -223,6 +227,32 @@ double FlatKernelMass4D(double radius, Norm norm) {
 
 double FlatKernelMass3D(double radius, Norm norm) {
     return KernelDoubleIntegral(norm, radius, 0.0, radius, LineWeight, FlatWeight);
+}
+
+double KernelOutMarginal(double radius, Norm norm, double dIn) {
+    CheckRadius(radius);
+    if (dIn >= radius) return 0.0;
+    constexpr int kSteps = 512;
+    static std::mutex mutex;
+    static std::map<std::pair<double, int>, std::vector<double>> tables;
+    const std::vector<double>* table;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        auto& slot = tables[std::make_pair(radius, static_cast<int>(norm))];
+        if (slot.empty()) {
+            for (int i = 0; i <= kSteps; ++i) {
+                const double a = radius * i / kSteps;
+                const double bMax = SupportLimit(norm, radius, a);
+                slot.push_back(Integrate(0.0, bMax, 4, [&](double b) {
+                    return SplatKernel(CombineDistances(norm, a, b) / radius) * SphereWeight(b);
+                }));
+            }
+        }
+        table = &slot;
+    }
+    const double u = dIn / radius * kSteps;
+    const int i = std::min(static_cast<int>(u), kSteps - 1);
+    return (*table)[i] + (u - i) * ((*table)[i + 1] - (*table)[i]);
 }
 
 double InDomainKernelMass(double radius, Norm norm, bool isotropic, double cIn, double cOut) {

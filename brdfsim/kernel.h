@@ -57,6 +57,11 @@ double SphereKernelMass3D(double radius, Norm norm);
 double FlatKernelMass4D(double radius, Norm norm);
 double FlatKernelMass3D(double radius, Norm norm);
 
+// ∫ k(norm(dIn, b) / R) dω over the outgoing sphere (b = the outgoing distance): the splat's
+// weight at incoming distance dIn once the outgoing direction is integrated out. Interpolated
+// from a table cached per (R, norm).
+double KernelOutMarginal(double radius, Norm norm, double dIn);
+
 // In-domain mass of a splat centred at colatitudes (cIn, cOut) for the thesis's renormalisation
 // (eqs. 4.9-4.10, done on the sphere). For isotropic maps cIn is θ_in and the in-domain part of
 // the θ_in axis is [0, π/2]. Interpolated from a table cached per (R, norm, isotropic).

@@ -111,16 +111,22 @@ std::uint64_t PhotonMapReader::ParseHeaderLine(const std::string& line) {
 void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vector<float>& rows) {
     if (ncomps_ == 0) {  // the first photon line fixes the number of colour values
         const char* p = begin;
+        std::uint64_t line = lineNumber_ + 1;
         while (p < end) {
             const char* q = p;
             float scratch[64];
             const int n = ParseNumbers(q, end, scratch, 64);
             if (n == 0) {  // a blank line
                 p = q + 1;
+                ++line;
                 continue;
             }
+            if (n < 0) {
+                throw PhotonMapError(path_ + ":" + std::to_string(line) +
+                                     ": expected numbers");
+            }
             if (n < kFirstColour + 1) {
-                throw PhotonMapError(path_ + ":" + std::to_string(lineNumber_ + 1) +
+                throw PhotonMapError(path_ + ":" + std::to_string(line) +
                                      ": expected theta_in phi_in theta_out phi_out probability "
                                      "and at least one colour value");
             }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hemisphere_grid.h"
+
 namespace gonio {
 
 namespace {
@@ -34,22 +36,41 @@ SplatSet::SplatSet(const PhotonMap& map, const SplatParams& p) : params(p) {
     mass = reflect ? (p.isotropic ? SphereKernelMass3D(p.radius, p.norm)
                                   : SphereKernelMass4D(p.radius, p.norm))
                    : 0.0;
+    struct Keyed {
+        std::uint64_t key;
+        std::size_t row;
+    };
+    std::vector<Keyed> order;
+    order.reserve(map.Size());
+    const HemisphereGrid fine(16, 64);
     for (std::size_t i = 0; i < map.Size(); ++i) {
         const float* row = map.Row(i);
         const float* colour = row + kFirstColour;
         if (*std::max_element(colour, colour + ncomps) < p.energyMin) continue;
+        const Imath::V3d wIn = Direction(row[kThetaIn], p.isotropic ? 0.0f : row[kPhiIn]);
+        const Imath::V3d wOut =
+            Direction(row[kThetaOut], row[kPhiOut] - (p.isotropic ? row[kPhiIn] : 0.0f));
+        const auto cellIn = static_cast<std::uint64_t>(fine.CellOf(Imath::V3f(wIn)));
+        const auto cellOut = static_cast<std::uint64_t>(fine.CellOf(Imath::V3f(wOut)));
+        order.push_back({(cellIn << 40) | (cellOut << 20), i});
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
+    geometry.reserve(order.size());
+    weights.reserve(order.size() * ncomps);
+    energies.reserve(order.size() * ncomps);
+    for (const Keyed& keyed : order) {
+        const float* row = map.Row(keyed.row);
+        const float* colour = row + kFirstColour;
         const double thetaI = row[kThetaIn], thetaO = row[kThetaOut];
         const Imath::V3d wIn = Direction(thetaI, row[kPhiIn]);
         // Isotropic maps store ω relative to φ_in: the domain is θ_in × (θ_out, Δφ).
         const Imath::V3d wOut =
             Direction(thetaO, row[kPhiOut] - (p.isotropic ? row[kPhiIn] : 0.0f));
-        inX.push_back(static_cast<float>(wIn.x));
-        inY.push_back(static_cast<float>(wIn.y));
-        inZ.push_back(static_cast<float>(wIn.z));
-        thetaIn.push_back(static_cast<float>(thetaI));
-        outX.push_back(static_cast<float>(wOut.x));
-        outY.push_back(static_cast<float>(wOut.y));
-        outZ.push_back(static_cast<float>(wOut.z));
+        geometry.push_back({static_cast<float>(wIn.x), static_cast<float>(wIn.y),
+                            static_cast<float>(wIn.z), static_cast<float>(thetaI),
+                            static_cast<float>(wOut.x), static_cast<float>(wOut.y),
+                            static_cast<float>(wOut.z), 0.0f});
         // p_in is per steradian; an isotropic map samples θ' only, with density 2π sin θ' p_in.
         const double pdf = p.isotropic
                                ? row[kProbability] * 2 * kPi * std::max(std::sin(thetaI), kMinSinIn)
@@ -118,9 +139,10 @@ SplatQuery SplatSet::MakeQuery(const Imath::V3f& wIn, const Imath::V3f& wOut) co
 void SplatSet::ImageCentre(std::size_t k, int v, Imath::V3d* in, double* theta,
                            Imath::V3d* out) const {
     const int first = v >> 1;
-    *in = Imath::V3d(inX[k], inY[k], inZ[k]);
-    *out = Imath::V3d(outX[k], outY[k], outZ[k]);
-    *theta = thetaIn[k];
+    const SplatGeometry& g = geometry[k];
+    *in = Imath::V3d(g.inX, g.inY, g.inZ);
+    *out = Imath::V3d(g.outX, g.outY, g.outZ);
+    *theta = g.thetaIn;
     if (params.isotropic) {
         if (first == 1) {
             *theta = -*theta;
@@ -142,7 +164,8 @@ std::vector<double> SplatSet::EnergyPerPath() const {
 }
 
 std::size_t SplatSetBytes(const SplatSet& s) {
-    return sizeof(float) * (s.inX.size() * 7 + s.weights.size() + s.energies.size());
+    return sizeof(SplatGeometry) * s.geometry.size() +
+           sizeof(float) * (s.weights.size() + s.energies.size());
 }
 
 }  // namespace gonio

@@ -3,7 +3,8 @@
 // radius R in the product domain, weighted by β / (N · p_in · cos θ_out · mass) so that the sum of
 // the splats estimates f(ω'→ω) in 1/sr. The horizon (and for isotropic maps the pole) is handled
 // by images: a query is also evaluated at its mirror points, which is the same as adding the
-// photon's mirror images. All arrays are structure-of-arrays floats for fast evaluation.
+// photon's mirror images. Splats are sorted by where they lie, so the splats of one grid cell
+// sit close together in memory.
 
 #include <Imath/ImathVec.h>
 
@@ -29,12 +30,18 @@ struct SplatQuery {
     unsigned activeMask = 0;  // images that can reach the domain from this point
 };
 
+// One splat's centre, 32 bytes so that a lookup touches one cache line per splat. The incoming
+// direction is unused by isotropic sets (θ_in is), kept for statistics and plots.
+struct SplatGeometry {
+    float inX, inY, inZ, thetaIn, outX, outY, outZ, pad;
+};
+
 class SplatSet {
 public:
     SplatSet() = default;
     SplatSet(const PhotonMap& map, const SplatParams& params);
 
-    std::size_t Size() const { return inZ.size(); }
+    std::size_t Size() const { return geometry.size(); }
     int NumComponents() const { return ncomps; }
     const SplatParams& Params() const { return params; }
     // 4 images in 4D (mirror of ω' × mirror of ω), 6 for isotropic maps (θ' itself, its
@@ -62,7 +69,7 @@ public:
     double mass = 0.0;          // kernel mass on the sphere (per photon in renormalise mode)
     float chordRadius2 = 0.0f;  // (2 sin(R/2))²: squared chord of the splat radius
     float invRadius = 0.0f;
-    std::vector<float> inX, inY, inZ, thetaIn, outX, outY, outZ;
+    std::vector<SplatGeometry> geometry;
     std::vector<float> weights;   // Size() × ncomps
     std::vector<float> energies;  // Size() × ncomps: β / p (for statistics)
 };
@@ -70,20 +77,36 @@ public:
 // Bytes held by the splat arrays.
 std::size_t SplatSetBytes(const SplatSet& splats);
 
+// asin for x in [0, 1] to float precision without the library call's overhead (Cephes asinf).
+inline float FastAsin(float x) {
+    const bool wide = x > 0.5f;
+    const float z = wide ? 0.5f * (1.0f - x) : x * x;
+    const float s = wide ? std::sqrt(z) : x;
+    const float p = ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
+                      7.4953002686e-2f) *
+                         z +
+                     1.6666752422e-1f) *
+                        z * s +
+                    s;
+    return wide ? 1.5707963267948966f - 2.0f * p : p;
+}
+
+// Great-circle distance from the squared chord: accurate for small distances, unlike acos(dot).
 inline float GreatCircleFromChord2(float chord2) {
-    return 2.0f * std::asin(0.5f * std::sqrt(chord2));
+    return 2.0f * FastAsin(0.5f * std::sqrt(chord2));
 }
 
 inline void SplatSet::Accumulate(std::size_t k, int v, const SplatQuery& q, double* acc) const {
-    const float ox = q.outX[v] - outX[k], oy = q.outY[v] - outY[k], oz = q.outZ[v] - outZ[k];
+    const SplatGeometry& g = geometry[k];
+    const float ox = q.outX[v] - g.outX, oy = q.outY[v] - g.outY, oz = q.outZ[v] - g.outZ;
     const float chordOut2 = ox * ox + oy * oy + oz * oz;
     if (chordOut2 >= chordRadius2) return;
     float dIn;
     if (params.isotropic) {
-        dIn = std::abs(q.thetaIn[v] - thetaIn[k]) * invRadius;
+        dIn = std::abs(q.thetaIn[v] - g.thetaIn) * invRadius;
         if (dIn >= 1.0f) return;
     } else {
-        const float ix = q.inX[v] - inX[k], iy = q.inY[v] - inY[k], iz = q.inZ[v] - inZ[k];
+        const float ix = q.inX[v] - g.inX, iy = q.inY[v] - g.inY, iz = q.inZ[v] - g.inZ;
         const float chordIn2 = ix * ix + iy * iy + iz * iz;
         if (chordIn2 >= chordRadius2) return;
         dIn = GreatCircleFromChord2(chordIn2) * invRadius;

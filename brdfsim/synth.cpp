@@ -59,21 +59,40 @@ private:
 bool DrawPhoton(const AnalyticBrdf& brdf, const SynthOptions& options, const PhotonRandom& random,
                 std::uint64_t i, float* row) {
     const std::array<double, kDims> u = random.Draw(i);
-    const double cosIn = std::max(1e-12, 1.0 - u[0]);  // cos θ' uniform: p_in = 1/2π
-    const double phiIn = options.isotropic ? 0.0 : 2 * kPi * u[1];
-    const double sinIn = std::sqrt(std::max(0.0, 1 - cosIn * cosIn));
-    const Imath::V3d wIn(sinIn * std::cos(phiIn), sinIn * std::sin(phiIn), cosIn);
+    double thetaIn, phiIn = 0.0, probability = 1.0 / (2 * kPi);
+    if (options.isotropic) {
+        // θ' uniform: density 2/π per radian, which is 2/π / (2π sin θ') per steradian of the
+        // rotation-symmetric distribution (docs/formats.md).
+        thetaIn = 0.5 * kPi * u[0];
+        probability = (2 / kPi) / (2 * kPi * std::max(std::sin(thetaIn), 1e-12));
+    } else {
+        thetaIn = std::acos(1.0 - u[0]);  // cos θ' uniform: p_in = 1/2π
+        phiIn = 2 * kPi * u[1];
+    }
+    const Imath::V3d wIn(std::sin(thetaIn) * std::cos(phiIn), std::sin(thetaIn) * std::sin(phiIn),
+                         std::cos(thetaIn));
+    Imath::V3d wOut;
     double pdf;
-    const Imath::V3d wOut = brdf.Sample(wIn, u[2], u[3], u[4], &pdf);
-    if (wOut.z <= 0 || pdf <= 0) return false;
+    const double uniformPdf = 1 / (2 * kPi);
+    if (options.defensive && u[2] < 0.5) {
+        const double cosT = u[3], sinT = std::sqrt(std::max(0.0, 1 - cosT * cosT));
+        wOut = Imath::V3d(sinT * std::cos(2 * kPi * u[4]), sinT * std::sin(2 * kPi * u[4]), cosT);
+    } else {
+        const double lobe = options.defensive ? 2 * (u[2] - 0.5) : u[2];
+        wOut = brdf.Sample(wIn, lobe, u[3], u[4], &pdf);
+    }
+    if (wOut.z <= 0) return false;
+    pdf = brdf.Pdf(wIn, wOut);
+    if (options.defensive) pdf = 0.5 * uniformPdf + 0.5 * pdf;
+    if (pdf <= 0) return false;
     const double beta = brdf.Eval(wIn, wOut) * wOut.z / pdf;
     double phiOut = std::atan2(wOut.y, wOut.x);
     if (phiOut < 0) phiOut += 2 * kPi;
-    row[kThetaIn] = static_cast<float>(std::acos(cosIn));
+    row[kThetaIn] = static_cast<float>(thetaIn);
     row[kPhiIn] = static_cast<float>(phiIn);
     row[kThetaOut] = static_cast<float>(std::acos(std::min(1.0, wOut.z)));
     row[kPhiOut] = static_cast<float>(phiOut);
-    row[kProbability] = static_cast<float>(1.0 / (2 * kPi));
+    row[kProbability] = static_cast<float>(probability);
     for (int c = 0; c < options.ncomps; ++c) row[kFirstColour + c] = static_cast<float>(beta);
     return true;
 }

@@ -1,4 +1,4 @@
-// gonio render SCENE.rib [-o OUT] [--threads N] [--seed S] [--progress] [--stats] [--keep-going]
+// gonio render SCENE.rib [-o OUT] [--threads N] [--seed S] [--progress] [--stats] [--strict]
 
 #include <tbb/global_control.h>
 
@@ -21,7 +21,7 @@ struct RenderOptions {
     uint64_t seed = 0;
     bool progress = false;
     bool stats = false;
-    bool keepGoing = false;
+    bool strict = false;
 };
 
 void PrintStats(const Frame& frame, const RenderStats& stats) {
@@ -35,8 +35,7 @@ void PrintStats(const Frame& frame, const RenderStats& stats) {
 
 int RunRender(const RenderOptions& options) {
     if (options.scene != "-" && !std::filesystem::is_regular_file(options.scene)) {
-        std::fprintf(stderr, "gonio render: cannot open scene file '%s'\n",
-                     options.scene.c_str());
+        std::fprintf(stderr, "gonio render: cannot open scene file '%s'\n", options.scene.c_str());
         return 2;
     }
     std::unique_ptr<tbb::global_control> threadLimit;
@@ -51,8 +50,10 @@ int RunRender(const RenderOptions& options) {
     settings.outputOverride = options.output;
     bool outputFailed = false;
     auto renderFrame = [&](const Frame& frame) {
-        if (diagnostics.ErrorCount() > 0 && !options.keepGoing) {
-            std::fprintf(stderr, "gonio render: frame %d not rendered because of the errors above\n",
+        const bool abort = options.strict || frame.options.errorHandler == "abort";
+        if (diagnostics.ErrorCount() > 0 && abort) {
+            std::fprintf(stderr,
+                         "gonio render: frame %d not rendered because of the errors above\n",
                          frame.number);
             return;
         }
@@ -80,8 +81,9 @@ void AddRenderCommand(CLI::App& app, int* exitCode) {
     cmd->add_option("--seed", options->seed, "Seed of the sample pattern (default 0)");
     cmd->add_flag("--progress", options->progress, "Show a progress line for long renders");
     cmd->add_flag("--stats", options->stats, "Print time and ray counts per frame");
-    cmd->add_flag("--keep-going", options->keepGoing,
-                  "Render frames even after errors in the scene (the bad requests are skipped)");
+    cmd->add_flag("--strict", options->strict,
+                  "Render no frame after an error (as ErrorHandler \"abort\"); by default bad "
+                  "requests are reported, skipped, and rendering goes on");
     cmd->callback([options, exitCode] { *exitCode = RunRender(*options); });
 }
 

@@ -40,7 +40,8 @@ template <class T>
 std::array<T, 4> ToBezier(const Imath::M44f& matrix, const std::array<T, 4>& g) {
     const Imath::M44f c = BezierFromBasis(matrix);
     std::array<T, 4> b;
-    for (int i = 0; i < 4; ++i) b[i] = g[0] * c[i][0] + g[1] * c[i][1] + g[2] * c[i][2] + g[3] * c[i][3];
+    for (int i = 0; i < 4; ++i)
+        b[i] = g[0] * c[i][0] + g[1] * c[i][1] + g[2] * c[i][2] + g[3] * c[i][3];
     return b;
 }
 

@@ -43,8 +43,8 @@ struct CurveSpan {
 };
 
 // The value of a varying or vertex variable at the start (t = 0) or end (t = 1) of segment s.
-void ValueAtSegmentEnd(const PrimVar& var, const CurveLayout& layout, const CurveSpan& curve,
-                       int s, float t, float* out) {
+void ValueAtSegmentEnd(const PrimVar& var, const CurveLayout& layout, const CurveSpan& curve, int s,
+                       float t, float* out) {
     const int k = var.components;
     if (var.decl.cls == ParamClass::Vertex && layout.cubic) {
         const auto w = BasisWeights(layout.basis.matrix, t);
@@ -91,7 +91,8 @@ GeometryResult<CurveSet> MakeCurves(const std::string& type, const std::vector<i
                                     const PrimVarSet& vars) {
     using Result = GeometryResult<CurveSet>;
     if (type != "linear" && type != "cubic")
-        return Result::Error("unknown curve type \"" + type + "\" (expected \"linear\" or \"cubic\")");
+        return Result::Error("unknown curve type \"" + type +
+                             "\" (expected \"linear\" or \"cubic\")");
     if (wrap != "periodic" && wrap != "nonperiodic")
         return Result::Error("unknown wrap mode \"" + wrap +
                              "\" (expected \"periodic\" or \"nonperiodic\")");
@@ -125,7 +126,9 @@ GeometryResult<CurveSet> MakeCurves(const std::string& type, const std::vector<i
     set.ribbon = normal != nullptr;
     for (size_t c = 0; c < curves.size(); ++c) {
         const CurveSpan& curve = curves[c];
-        const auto vertex = [&](int i) { return (*points)[curve.firstVertex + i % curve.vertexCount]; };
+        const auto vertex = [&](int i) {
+            return (*points)[curve.firstVertex + i % curve.vertexCount];
+        };
         for (int s = 0; s < curve.segments; ++s) {
             const float r0 = 0.5f * WidthAt(width, constantWidth, layout, curve, s, 0);
             const float r1 = 0.5f * WidthAt(width, constantWidth, layout, curve, s, 1);
@@ -155,7 +158,8 @@ GeometryResult<CurveSet> MakeCurves(const std::string& type, const std::vector<i
             if (normal->decl.cls == ParamClass::Vertex) {
                 std::array<V3f, 4> gn;
                 for (int k = 0; k < 4; ++k) {
-                    const float* v = normal->Value(curve.firstVertex + (first + k) % curve.vertexCount);
+                    const float* v =
+                        normal->Value(curve.firstVertex + (first + k) % curve.vertexCount);
                     gn[k] = V3f(v[0], v[1], v[2]);
                 }
                 for (const V3f& b : ToBezier(layout.basis.matrix, gn)) set.normals.push_back(b);

@@ -10,7 +10,7 @@ namespace gonio {
 
 template <class T>
 class GeometryResult {
-public:
+  public:
     GeometryResult(T value) : state_(std::move(value)) {}
     static GeometryResult Error(std::string message) {
         GeometryResult r;
@@ -25,7 +25,7 @@ public:
     T&& Take() { return std::move(std::get<T>(state_)); }
     const std::string& Error() const { return std::get<ErrorText>(state_).text; }
 
-private:
+  private:
     struct ErrorText {
         std::string text;
     };

@@ -43,8 +43,7 @@ std::optional<std::string> CheckDirection(const PatchDirection& d, const char* n
     }
     if (d.count < 4 || (d.count - 4) % d.basis.step != 0)
         return "nonperiodic bicubic n" + n + " = " + std::to_string(d.count) +
-               " must be 4 plus a multiple of the " + n + " step " +
-               std::to_string(d.basis.step);
+               " must be 4 plus a multiple of the " + n + " step " + std::to_string(d.basis.step);
     return std::nullopt;
 }
 
@@ -87,7 +86,8 @@ bool AllParallelograms(const std::vector<float>& h, const PatchDirection& u,
         for (int i = 0; i < u.PatchCount(); ++i) {
             const float *a = at(i, j), *b = at(i + 1, j), *c = at(i, j + 1), *d = at(i + 1, j + 1);
             float size = 0;
-            for (int k = 0; k < 3; ++k) size = std::max(size, std::abs(b[k] - a[k]) + std::abs(c[k] - a[k]));
+            for (int k = 0; k < 3; ++k)
+                size = std::max(size, std::abs(b[k] - a[k]) + std::abs(c[k] - a[k]));
             for (int k = 0; k < 4; ++k)
                 if (std::abs(a[k] + d[k] - b[k] - c[k]) > 1e-6f * size) return false;
             if (a[3] != b[3] || a[3] != c[3]) return false;

@@ -48,14 +48,18 @@ bool InTriangle(const V2f& a, const V2f& b, const V2f& c, const V2f& p) {
 // joined to the outline by a bridge edge that crosses no other edge, turning the polygon with
 // holes into one weakly simple ring that ear clipping handles.
 class EarClipper {
-public:
+  public:
     explicit EarClipper(std::vector<V2f> pts) : pts_(std::move(pts)) {}
 
     std::vector<std::array<uint32_t, 3>> Run(std::vector<int> outline,
                                              std::vector<std::vector<int>> holes) {
         const float outlineArea = SignedArea(pts_, outline);
         if (!(outlineArea > 0)) return {};
+        // Turns smaller than this are rounding noise of (nearly) collinear vertices: such a
+        // vertex is dropped without a triangle rather than clipped as a sliver whose winding
+        // rounding may have flipped.
         const float tinyArea = outlineArea * 1e-7f;
+        flatTurn_ = 2 * tinyArea;
         std::vector<std::vector<int>> kept;
         for (auto& hole : holes) {
             if (hole.size() < 3) continue;
@@ -68,14 +72,13 @@ public:
         ring_ = std::move(outline);
         holes_ = std::move(kept);
         // Rightmost holes first, so that bridges of later holes can reach past them.
-        std::sort(holes_.begin(), holes_.end(), [&](const auto& a, const auto& b) {
-            return MaxX(a) > MaxX(b);
-        });
+        std::sort(holes_.begin(), holes_.end(),
+                  [&](const auto& a, const auto& b) { return MaxX(a) > MaxX(b); });
         for (size_t h = 0; h < holes_.size(); ++h) BridgeHole(h);
         return ClipEars();
     }
 
-private:
+  private:
     float MaxX(const std::vector<int>& loop) const {
         float m = -INFINITY;
         for (int i : loop) m = std::max(m, pts_[i].x);
@@ -137,7 +140,7 @@ private:
     bool IsEar(int prev, int v, int next, const std::vector<int>& prevOf,
                const std::vector<int>& nextOf) const {
         const V2f &a = pts_[ring_[prev]], &b = pts_[ring_[v]], &c = pts_[ring_[next]];
-        if (Cross(a, b, c) <= 0) return false;
+        if (Cross(a, b, c) <= flatTurn_) return false;
         for (int i = nextOf[next]; i != prev; i = nextOf[i]) {
             const int p = ring_[i];
             // Bridge duplicates of the ear's own corners may touch it without blocking it.
@@ -170,7 +173,8 @@ private:
         while (remaining > 3) {
             const int prev = prevOf[v], next = nextOf[v];
             const float turn = Cross(pts_[ring_[prev]], pts_[ring_[v]], pts_[ring_[next]]);
-            const bool flat = turn == 0;  // collinear or a zero-width spike: no area to emit
+            // Collinear, or a zero-width spike: nothing to emit.
+            const bool flat = std::abs(turn) <= flatTurn_;
             if (flat || IsEar(prev, v, next, prevOf, nextOf)) {
                 if (!flat) emit(prev, v, next);
                 remove(v);
@@ -197,7 +201,7 @@ private:
                 sinceLastClip = 0;
             }
         }
-        if (Cross(pts_[ring_[prevOf[v]]], pts_[ring_[v]], pts_[ring_[nextOf[v]]]) > 0)
+        if (Cross(pts_[ring_[prevOf[v]]], pts_[ring_[v]], pts_[ring_[nextOf[v]]]) > flatTurn_)
             emit(prevOf[v], v, nextOf[v]);
         return tris;
     }
@@ -205,6 +209,7 @@ private:
     std::vector<V2f> pts_;
     std::vector<int> ring_;
     std::vector<std::vector<int>> holes_;
+    float flatTurn_ = 0;
 };
 
 // The faces of a PointsGeneralPolygons, checked: nloops per face, nverts per loop, and corner
@@ -218,7 +223,8 @@ struct FaceLayout {
 std::optional<std::string> CheckLayout(const FaceLayout& f, size_t pointCount) {
     size_t loops = 0, corners = 0;
     for (int n : f.nloops) {
-        if (n < 1) return std::string("every face needs at least one loop, got ") + std::to_string(n);
+        if (n < 1)
+            return std::string("every face needs at least one loop, got ") + std::to_string(n);
         loops += n;
     }
     if (loops != f.nverts.size())
@@ -287,9 +293,13 @@ void AttachVars(const PrimVarSet& vars, const std::vector<uint32_t>& corners, Tr
         }
         switch (var.decl.cls) {
             case ParamClass::Constant:
-            case ParamClass::Uniform: mesh->vars.push_back(UnchangedMeshVar(var)); break;
+            case ParamClass::Uniform:
+                mesh->vars.push_back(UnchangedMeshVar(var));
+                break;
             case ParamClass::Varying:
-            case ParamClass::Vertex: mesh->vars.push_back({var, MeshRate::PerVertex}); break;
+            case ParamClass::Vertex:
+                mesh->vars.push_back({var, MeshRate::PerVertex});
+                break;
             case ParamClass::FaceVarying:
             case ParamClass::FaceVertex:
                 mesh->vars.push_back(
@@ -327,8 +337,12 @@ std::vector<std::array<uint32_t, 3>> TriangulateLoops(const std::vector<V3f>& po
     n.normalize();
     // In the frame (t, b) with t × b = n the outline runs counter-clockwise.
     const V3f t = AnyPerpendicular(n), b = n.cross(t);
+    // Relative to the first vertex, so that polygons far from the origin keep their precision.
     std::vector<V2f> flat(points.size());
-    for (size_t i = 0; i < points.size(); ++i) flat[i] = V2f(points[i].dot(t), points[i].dot(b));
+    for (size_t i = 0; i < points.size(); ++i) {
+        const V3f p = points[i] - points[0];
+        flat[i] = V2f(p.dot(t), p.dot(b));
+    }
 
     std::vector<int> ring(loopSizes[0]);
     std::iota(ring.begin(), ring.end(), 0);

@@ -11,13 +11,11 @@ namespace gonio {
 
 struct PrimVar {
     ParamDecl decl;
-    int components = 1;               // floats per value (3 for point, ncomps for color, ...)
-    std::vector<float> values;        // numeric data, `components` floats per value
-    std::vector<std::string> strings; // string data (constant/uniform string parameters)
+    int components = 1;                // floats per value (3 for point, ncomps for color, ...)
+    std::vector<float> values;         // numeric data, `components` floats per value
+    std::vector<std::string> strings;  // string data (constant/uniform string parameters)
 
-    int ValueCount() const {
-        return components ? static_cast<int>(values.size()) / components : 0;
-    }
+    int ValueCount() const { return components ? static_cast<int>(values.size()) / components : 0; }
     const float* Value(int i) const { return values.data() + i * components; }
 };
 

@@ -4,24 +4,35 @@ namespace gonio {
 
 int ClassCounts::For(ParamClass cls) const {
     switch (cls) {
-        case ParamClass::Constant: return 1;
-        case ParamClass::Uniform: return uniform;
-        case ParamClass::Varying: return varying;
-        case ParamClass::Vertex: return vertex;
+        case ParamClass::Constant:
+            return 1;
+        case ParamClass::Uniform:
+            return uniform;
+        case ParamClass::Varying:
+            return varying;
+        case ParamClass::Vertex:
+            return vertex;
         case ParamClass::FaceVarying:
-        case ParamClass::FaceVertex: return faceVarying;
+        case ParamClass::FaceVertex:
+            return faceVarying;
     }
     return 1;
 }
 
 const char* ClassName(ParamClass cls) {
     switch (cls) {
-        case ParamClass::Constant: return "constant";
-        case ParamClass::Uniform: return "uniform";
-        case ParamClass::Varying: return "varying";
-        case ParamClass::Vertex: return "vertex";
-        case ParamClass::FaceVarying: return "facevarying";
-        case ParamClass::FaceVertex: return "facevertex";
+        case ParamClass::Constant:
+            return "constant";
+        case ParamClass::Uniform:
+            return "uniform";
+        case ParamClass::Varying:
+            return "varying";
+        case ParamClass::Vertex:
+            return "vertex";
+        case ParamClass::FaceVarying:
+            return "facevarying";
+        case ParamClass::FaceVertex:
+            return "facevertex";
     }
     return "?";
 }
@@ -35,8 +46,8 @@ std::optional<std::string> CheckCounts(const PrimVarSet& vars, const ClassCounts
         const bool isString = v.values.empty() && !v.strings.empty();
         const int got = isString ? static_cast<int>(v.strings.size()) : v.ValueCount();
         if (got != expected || (!isString && v.values.size() % v.components != 0))
-            return std::string(ClassName(v.decl.cls)) + " variable \"" + v.decl.name +
-                   "\" needs " + std::to_string(expected) + " values, got " + std::to_string(got);
+            return std::string(ClassName(v.decl.cls)) + " variable \"" + v.decl.name + "\" needs " +
+                   std::to_string(expected) + " values, got " + std::to_string(got);
     }
     return std::nullopt;
 }

@@ -7,18 +7,12 @@
 
 namespace gonio::quadric {
 
-double RevolutionQuadric::Residual(const V3d& p) const {
-    const double w = p.z - z0;
-    return lambda * (p.x * p.x + p.y * p.y) - ((alpha * w + beta) * w + gamma);
-}
-
 int RevolutionQuadric::RayRoots(const V3d& o, const V3d& d, double lo, double hi,
                                 double t[2]) const {
     // Substitute o + t·d into the implicit equation: c2·t² + c1·t + c0 = 0.
     const double w0 = o.z - z0;
     const double c2 = lambda * (d.x * d.x + d.y * d.y) - alpha * d.z * d.z;
-    const double c1 =
-        2 * lambda * (o.x * d.x + o.y * d.y) - 2 * alpha * w0 * d.z - beta * d.z;
+    const double c1 = 2 * lambda * (o.x * d.x + o.y * d.y) - 2 * alpha * w0 * d.z - beta * d.z;
     const double c0 = lambda * (o.x * o.x + o.y * o.y) - (alpha * w0 + beta) * w0 - gamma;
     double all[2];
     const int n = SolveQuadratic(c2, c1, c0, all);
@@ -71,22 +65,22 @@ void RevolvedQuadric::SetExtent(const std::vector<V2d>& extremes, double zlo, do
     for (const V2d& q : extremes) IncludeArc(q, thetaMax_, fullSweep_, zlo, zhi, box);
     // Pad by a few float ulps of the largest coordinate: Evaluate and Intersect round their
     // double results to float independently of the box.
-    const float scale = std::max({std::fabs(box.min.x), std::fabs(box.min.y),
-                                  std::fabs(box.min.z), std::fabs(box.max.x),
-                                  std::fabs(box.max.y), std::fabs(box.max.z), 1e-30f});
+    const float scale =
+        std::max({std::fabs(box.min.x), std::fabs(box.min.y), std::fabs(box.min.z),
+                  std::fabs(box.max.x), std::fabs(box.max.y), std::fabs(box.max.z), 1e-30f});
     const V3f pad(scale * 1e-6f);
     bounds_ = Box3f(box.min - pad, box.max + pad);
     center_ = V3d(0.5 * (double(box.min.x) + box.max.x), 0.5 * (double(box.min.y) + box.max.y),
                   0.5 * (double(box.min.z) + box.max.z));
 }
 
-bool RevolvedQuadric::ThetaParameter(const V3d& p, const V3d& profilePoint, double* u) const {
+bool RevolvedQuadric::ThetaParameter(const V3d& p, double profileAngle, double* u) const {
     const double psi = std::atan2(p.y, p.x);
-    const double alpha = std::atan2(profilePoint.y, profilePoint.x);
     // How far the sweep has turned to carry the profile point onto p, in the sweep's sense.
-    double theta = thetaMax_ >= 0 ? psi - alpha : alpha - psi;
+    double theta = thetaMax_ >= 0 ? psi - profileAngle : profileAngle - psi;
     if (theta < 0) theta += 2 * kPi;
-    if (theta >= 2 * kPi) theta -= 2 * kPi;
+    // A point a rounding error short of a full turn lies on the sweep's starting edge.
+    if (theta >= 2 * kPi - 1e-12) theta = 0;
     const double sweep = std::fabs(thetaMax_);
     if (!fullSweep_ && theta > sweep) return false;
     *u = std::min(theta / sweep, 1.0);
@@ -111,14 +105,14 @@ bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, floa
         const double t = t0 + roots[i];
         if (!(t > tmin && t < tmax)) continue;
         const V3d p = origin + roots[i] * d;
-        double vs[2];
-        const int candidates = ProfileParameters(p, vs);
-        for (int j = 0; j < candidates; ++j) {
+        ProfileCandidate candidates[2];
+        const int m = ProfileCandidates(p, candidates);
+        for (int j = 0; j < m; ++j) {
             double u;
-            if (!ThetaParameter(p, Profile(vs[j]).L, &u)) continue;
+            if (!ThetaParameter(p, candidates[j].angle, &u)) continue;
             hit->t = float(t);
             hit->u = float(u);
-            hit->v = float(vs[j]);
+            hit->v = float(candidates[j].v);
             return true;
         }
     }

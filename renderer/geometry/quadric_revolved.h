@@ -33,34 +33,38 @@ struct ProfilePoint {
     V3d normal;
 };
 
+// A profile point that can sweep onto a given surface point: its v, and its own polar angle
+// atan2(L.y, L.x) (0 or π for profiles in the xz plane), from which the sweep angle follows.
+struct ProfileCandidate {
+    double v = 0, angle = 0;
+};
+
 // The implicit surface λ·(x² + y²) = α·w² + β·w + γ with w = z − z0: the form shared by the
 // sphere, the paraboloid and the swept lines (cylinder, cone, disk, hyperboloid).
 struct RevolutionQuadric {
     double lambda = 1, alpha = 0, beta = 0, gamma = 0, z0 = 0;
 
-    double Residual(const V3d& p) const;
     // The ray parameters in (lo, hi) where o + t·d meets the surface, ascending.
     int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[2]) const;
 };
 
 class RevolvedQuadric : public Quadric {
-public:
+  public:
     Box3f Bounds() const final { return bounds_; }
     bool Intersect(const V3f& org, const V3f& dir, float tmin, float tmax,
                    QuadricHit* hit) const final;
     SurfaceGeometry Evaluate(float u, float v) const final;
 
-protected:
+  protected:
     explicit RevolvedQuadric(double thetamaxDegrees);
 
     virtual ProfilePoint Profile(double v) const = 0;
     // Where the ray o + t·d (o already moved near the shape) meets the whole unclipped surface,
     // for t in (lo, hi), ascending; at most 4.
-    virtual int RayRoots(const V3d& o, const V3d& d, double lo, double hi,
-                         double t[4]) const = 0;
-    // The parameters v in [0, 1] of the profile points whose sweep passes through the surface
-    // point p (at most 2: a profile may meet one circle twice).
-    virtual int ProfileParameters(const V3d& p, double v[2]) const = 0;
+    virtual int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const = 0;
+    // The profile points with v in [0, 1] whose sweep passes through the surface point p (at
+    // most 2: a profile may meet one circle twice).
+    virtual int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const = 0;
 
     // Derived constructors end with one of these. The surface lies inside the sweep of the
     // profile points `extremes` (x, y before the sweep), for z in [zlo, zhi].
@@ -70,8 +74,8 @@ protected:
     double thetaMax_;  // radians, signed
     bool degenerate_ = false;
 
-private:
-    bool ThetaParameter(const V3d& p, const V3d& profilePoint, double* u) const;
+  private:
+    bool ThetaParameter(const V3d& p, double profileAngle, double* u) const;
 
     bool fullSweep_;
     V3d center_{0, 0, 0};

@@ -16,20 +16,31 @@ void CosSinRange(double lo, double hi, V2d* cosRange, V2d* sinRange) {
         *cosRange = *sinRange = V2d(-1, 1);
         return;
     }
+    const double turns = std::floor(lo / (2 * kPi)) * (2 * kPi);  // keeps the loop below short
+    lo -= turns;
+    hi -= turns;
     *cosRange = V2d(std::min(std::cos(lo), std::cos(hi)), std::max(std::cos(lo), std::cos(hi)));
     *sinRange = V2d(std::min(std::sin(lo), std::sin(hi)), std::max(std::sin(lo), std::sin(hi)));
     for (double k = std::ceil(lo / (kPi / 2)); k <= std::floor(hi / (kPi / 2)); ++k) {
         switch (((int(k) % 4) + 4) % 4) {
-            case 0: cosRange->y = 1; break;
-            case 1: sinRange->y = 1; break;
-            case 2: cosRange->x = -1; break;
-            case 3: sinRange->x = -1; break;
+            case 0:
+                cosRange->y = 1;
+                break;
+            case 1:
+                sinRange->y = 1;
+                break;
+            case 2:
+                cosRange->x = -1;
+                break;
+            case 3:
+                sinRange->x = -1;
+                break;
         }
     }
 }
 
 class Torus final : public RevolvedQuadric {
-public:
+  public:
     Torus(double majorRadius, double minorRadius, double phimin, double phimax, double thetamax)
         : RevolvedQuadric(thetamax),
           major_(majorRadius),
@@ -39,8 +50,7 @@ public:
           fullTube_(std::fabs(phimax - phimin) >= 360) {
         if (minorRadius == 0 || phimin == phimax) SetDegenerate();
         V2d cosRange, sinRange;
-        CosSinRange(std::min(phiMin_, phiMax_), std::max(phiMin_, phiMax_), &cosRange,
-                    &sinRange);
+        CosSinRange(std::min(phiMin_, phiMax_), std::max(phiMin_, phiMax_), &cosRange, &sinRange);
         // For a fixed θ a point's coordinates are linear in the profile's x, so the profile's
         // extreme x values bound the whole sweep.
         const double x0 = major_ + minor_ * cosRange.x, x1 = major_ + minor_ * cosRange.y;
@@ -48,7 +58,7 @@ public:
         SetExtent({V2d(x0, 0), V2d(x1, 0)}, std::min(z0, z1), std::max(z0, z1));
     }
 
-protected:
+  protected:
     ProfilePoint Profile(double v) const override {
         const double dphi = phiMax_ - phiMin_;
         const double phi = phiMin_ + v * dphi;
@@ -95,10 +105,10 @@ protected:
         return n;
     }
 
-    int ProfileParameters(const V3d& p, double v[2]) const override {
+    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
         // The point lies on the tube circle centred at signed distance +R from the axis in its
         // own half plane (θ = ψ), or, for a spindle torus, at −R (θ = ψ + π). Try the nearer.
-        const double rho = std::hypot(p.x, p.y);
+        const double rho = std::sqrt(p.x * p.x + p.y * p.y);
         const double offAxis[2] = {rho, -rho};
         double miss[2];
         for (int i = 0; i < 2; ++i)
@@ -109,17 +119,18 @@ protected:
         for (int i : {first, 1 - first}) {
             if (miss[i] > tolerance) continue;
             const double phi = std::atan2(p.z / minor_, (offAxis[i] - major_) / minor_);
-            if (TubeParameter(phi, &v[n])) ++n;
+            if (TubeParameter(phi, &c[n].v)) c[n++].angle = offAxis[i] < 0 ? kPi : 0;
         }
         return n;
     }
 
-private:
+  private:
     // v for the tube angle phi (any turn), if phi lies in the swept φ range.
     bool TubeParameter(double phi, double* v) const {
         const double dphi = phiMax_ - phiMin_;
         double turned = std::fmod(dphi >= 0 ? phi - phiMin_ : phiMin_ - phi, 2 * kPi);
         if (turned < 0) turned += 2 * kPi;
+        if (turned >= 2 * kPi - 1e-12) turned = 0;  // on the starting edge
         if (!fullTube_ && turned > std::fabs(dphi)) return false;
         *v = std::min(turned / std::fabs(dphi), 1.0);
         return true;
@@ -132,8 +143,8 @@ private:
 }  // namespace
 }  // namespace quadric
 
-std::unique_ptr<Quadric> MakeTorus(float majorRadius, float minorRadius, float phimin,
-                                   float phimax, float thetamax) {
+std::unique_ptr<Quadric> MakeTorus(float majorRadius, float minorRadius, float phimin, float phimax,
+                                   float thetamax) {
     const bool finite = std::isfinite(majorRadius) && std::isfinite(minorRadius) &&
                         std::isfinite(phimin) && std::isfinite(phimax) && std::isfinite(thetamax);
     if (!finite) majorRadius = minorRadius = phimin = phimax = thetamax = 0;

@@ -18,7 +18,7 @@ bool AllFinite(std::initializer_list<float> values) {
 }
 
 class Sphere final : public RevolvedQuadric {
-public:
+  public:
     Sphere(double radius, double zmin, double zmax, double thetamax)
         : RevolvedQuadric(thetamax), radius_(radius) {
         // RISpec: φmin = asin(zmin/r), or −90° where zmin ≤ −r (likewise φmax); clamping the
@@ -38,7 +38,7 @@ public:
                   std::max(z0, z1));
     }
 
-protected:
+  protected:
     ProfilePoint Profile(double v) const override {
         const double phi = phiMin_ + v * (phiMax_ - phiMin_);
         const double c = std::cos(phi), s = std::sin(phi);
@@ -51,14 +51,14 @@ protected:
         return implicit_.RayRoots(o, d, lo, hi, t);
     }
 
-    int ProfileParameters(const V3d& p, double v[2]) const override {
+    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
         // sin φ = z/r and cos φ = ρ/|r| ≥ 0; atan2 stays accurate near the poles.
-        const double phi = std::atan2(p.z * SignOf(radius_), std::hypot(p.x, p.y));
-        v[0] = (phi - phiMin_) / (phiMax_ - phiMin_);
-        return v[0] >= 0 && v[0] <= 1 ? 1 : 0;
+        const double phi = std::atan2(p.z * SignOf(radius_), std::sqrt(p.x * p.x + p.y * p.y));
+        c[0] = {(phi - phiMin_) / (phiMax_ - phiMin_), radius_ < 0 ? kPi : 0};
+        return c[0].v >= 0 && c[0].v <= 1 ? 1 : 0;
     }
 
-private:
+  private:
     double radius_, phiMin_ = 0, phiMax_ = 0;
     RevolutionQuadric implicit_;
 };
@@ -66,9 +66,12 @@ private:
 // The surface swept by the segment point1 → point2: RISpec's hyperboloid, of which the
 // cylinder, the cone and the disk are special cases with exactly the same (u, v).
 class SweptLine final : public RevolvedQuadric {
-public:
+  public:
     SweptLine(const V3d& point1, const V3d& point2, double thetamax)
-        : RevolvedQuadric(thetamax), start_(point1), direction_(point2 - point1) {
+        : RevolvedQuadric(thetamax),
+          start_(point1),
+          direction_(point2 - point1),
+          inXZPlane_(point1.y == 0 && point2.y == 0) {
         const bool onAxis = point1.x == 0 && point1.y == 0 && point2.x == 0 && point2.y == 0;
         if (point1 == point2 || onAxis) SetDegenerate();
         // At height z the sweep is the circle of radius |a + b·w/dz| (a, b: the xy parts of
@@ -79,11 +82,11 @@ public:
         const double ab = start_.x * direction_.x + start_.y * direction_.y;
         const double bb = direction_.x * direction_.x + direction_.y * direction_.y;
         implicit_ = {dz * dz, bb, 2 * ab * dz, aa * dz * dz, start_.z};
-        SetExtent({V2d(point1.x, point1.y), V2d(point2.x, point2.y)},
-                  std::min(point1.z, point2.z), std::max(point1.z, point2.z));
+        SetExtent({V2d(point1.x, point1.y), V2d(point2.x, point2.y)}, std::min(point1.z, point2.z),
+                  std::max(point1.z, point2.z));
     }
 
-protected:
+  protected:
     ProfilePoint Profile(double v) const override {
         const V3d L = start_ + v * direction_;
         const V3d& d = direction_;
@@ -108,10 +111,12 @@ protected:
         return t[0] > lo && t[0] < hi ? 1 : 0;
     }
 
-    int ProfileParameters(const V3d& p, double v[2]) const override {
+    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
         if (direction_.z != 0) {
-            v[0] = (p.z - start_.z) / direction_.z;
-            return v[0] >= 0 && v[0] <= 1 ? 1 : 0;
+            const double v = (p.z - start_.z) / direction_.z;
+            if (!(v >= 0 && v <= 1)) return 0;
+            c[0] = {v, AngleAt(v)};
+            return 1;
         }
         // In the plane: the v where |a + v·b| equals the point's distance from the axis.
         const double aa = start_.x * start_.x + start_.y * start_.y;
@@ -121,17 +126,24 @@ protected:
         const int n = SolveQuadratic(bb, 2 * ab, aa - (p.x * p.x + p.y * p.y), roots);
         int kept = 0;
         for (int i = 0; i < n; ++i)
-            if (roots[i] >= 0 && roots[i] <= 1) v[kept++] = roots[i];
+            if (roots[i] >= 0 && roots[i] <= 1) c[kept++] = {roots[i], AngleAt(roots[i])};
         return kept;
     }
 
-private:
+  private:
+    double AngleAt(double v) const {
+        const V3d L = start_ + v * direction_;
+        if (inXZPlane_) return L.x < 0 ? kPi : 0;
+        return std::atan2(L.y, L.x);
+    }
+
     V3d start_, direction_;
+    bool inXZPlane_;  // the cylinder, cone and disk: every profile angle is 0 or π
     RevolutionQuadric implicit_;
 };
 
 class Paraboloid final : public RevolvedQuadric {
-public:
+  public:
     Paraboloid(double rmax, double zmin, double zmax, double thetamax)
         : RevolvedQuadric(thetamax), rmax_(rmax), zmin_(zmin), zmax_(zmax) {
         if (rmax == 0 || zmax == 0 || zmin == zmax) SetDegenerate();
@@ -141,7 +153,7 @@ public:
         SetExtent(extremes, std::min(zmin, zmax), std::max(zmin, zmax));
     }
 
-protected:
+  protected:
     ProfilePoint Profile(double v) const override {
         const double z = zmin_ + v * (zmax_ - zmin_);
         // z/zmax < 0 lies off the surface; the formula collapses it onto the axis.
@@ -159,12 +171,12 @@ protected:
         return implicit_.RayRoots(o, d, lo, hi, t);
     }
 
-    int ProfileParameters(const V3d& p, double v[2]) const override {
-        v[0] = (p.z - zmin_) / (zmax_ - zmin_);
-        return v[0] >= 0 && v[0] <= 1 ? 1 : 0;
+    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
+        c[0] = {(p.z - zmin_) / (zmax_ - zmin_), rmax_ < 0 ? kPi : 0};
+        return c[0].v >= 0 && c[0].v <= 1 ? 1 : 0;
     }
 
-private:
+  private:
     double rmax_, zmin_, zmax_;
     RevolutionQuadric implicit_;
 };
@@ -190,10 +202,10 @@ std::unique_ptr<Quadric> MakeDisk(float height, float radius, float thetamax) {
 }
 
 std::unique_ptr<Quadric> MakeHyperboloid(const V3f& point1, const V3f& point2, float thetamax) {
-    if (!quadric::AllFinite({point1.x, point1.y, point1.z, point2.x, point2.y, point2.z,
-                             thetamax}))
-        return std::make_unique<quadric::SweptLine>(V3d(0), V3d(0), 0);
-    return std::make_unique<quadric::SweptLine>(V3d(point1), V3d(point2), thetamax);
+    if (!quadric::AllFinite({point1.x, point1.y, point1.z, point2.x, point2.y, point2.z, thetamax}))
+        return std::make_unique<quadric::SweptLine>(quadric::V3d(0), quadric::V3d(0), 0);
+    return std::make_unique<quadric::SweptLine>(quadric::V3d(point1), quadric::V3d(point2),
+                                                thetamax);
 }
 
 std::unique_ptr<Quadric> MakeParaboloid(float rmax, float zmin, float zmax, float thetamax) {

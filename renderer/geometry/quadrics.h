@@ -18,8 +18,10 @@
 // torus tube, down and out of an upward paraboloid, +z for the disk), as RISpec requires. As
 // RISpec also says, reversing a parameter turns the quadric inside out: negative thetamax,
 // zmin > zmax, phimin > phimax (and point1 above point2) flip Ng; the ranges are never swapped,
-// so (u, v) always follow the formulas above literally. A negative sphere radius keeps the
-// z range [zmin, zmax] (φ = asin(z/r) with the argument clamped to [−1, 1]).
+// so (u, v) always follow the formulas above literally. A flat hyperboloid (point1.z = point2.z)
+// faces +z where its line runs towards the axis (as Disk does) and −z where it runs away. A
+// negative sphere radius keeps the z range [zmin, zmax] (φ = asin(z/r) with the argument clamped to
+// [−1, 1]).
 //
 // Degenerate parameters (a zero radius or height where it collapses the surface, thetamax = 0,
 // an empty z or φ range, point1 = point2, a paraboloid with zmax = 0, non-finite numbers) give a
@@ -41,7 +43,7 @@ std::unique_ptr<Quadric> MakeCylinder(float radius, float zmin, float zmax, floa
 std::unique_ptr<Quadric> MakeHyperboloid(const V3f& point1, const V3f& point2, float thetamax);
 std::unique_ptr<Quadric> MakeParaboloid(float rmax, float zmin, float zmax, float thetamax);
 std::unique_ptr<Quadric> MakeDisk(float height, float radius, float thetamax);
-std::unique_ptr<Quadric> MakeTorus(float majorRadius, float minorRadius, float phimin,
-                                   float phimax, float thetamax);
+std::unique_ptr<Quadric> MakeTorus(float majorRadius, float minorRadius, float phimin, float phimax,
+                                   float thetamax);
 
 }  // namespace gonio

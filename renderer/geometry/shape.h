@@ -61,7 +61,7 @@ struct QuadricHit {
 
 // The RISpec §5.4 quadrics, intersected exactly (Embree user geometry).
 class Quadric {
-public:
+  public:
     virtual ~Quadric() = default;
     virtual Box3f Bounds() const = 0;
     // The nearest hit with tmin < t < tmax of the ray org + t·dir (dir need not be unit length).
@@ -76,8 +76,8 @@ struct SubdivisionCage {
     std::vector<V3f> positions;
     std::vector<uint32_t> faceVertexCounts;
     std::vector<uint32_t> indices;
-    std::vector<uint32_t> creaseEdges;   // pairs of vertex indices
-    std::vector<float> creaseWeights;    // one per pair
+    std::vector<uint32_t> creaseEdges;  // pairs of vertex indices
+    std::vector<float> creaseWeights;   // one per pair
     std::vector<uint32_t> cornerVertices;
     std::vector<float> cornerWeights;
     std::vector<uint32_t> holeFaces;
@@ -97,7 +97,7 @@ struct CurveSet {
     std::vector<uint32_t> segmentFirst;    // first control point of each segment
     std::vector<uint32_t> curveOfSegment;  // RIB curve of each segment (uniform primvars)
     std::vector<float> segmentV0, segmentV1;  // the curve parameter v at each segment's ends
-    PrimVarSet vars;  // everything but P and width
+    PrimVarSet vars;                          // everything but P and width
 };
 
 // Points as discs facing the ray (RenderMan's default), or spheres.

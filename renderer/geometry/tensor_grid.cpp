@@ -71,11 +71,11 @@ std::vector<V3f> AsPoints(const std::vector<float>& v) {
     return out;
 }
 
-void AttachGridNormals(const PrimVar& n, const GridAxis& u, const GridAxis& v,
-                       TriangleMesh* mesh) {
+void AttachGridNormals(const PrimVar& n, const GridAxis& u, const GridAxis& v, TriangleMesh* mesh) {
     switch (n.decl.cls) {
         case ParamClass::Constant:
-            mesh->normals.assign(mesh->positions.size(), V3f(n.values[0], n.values[1], n.values[2]));
+            mesh->normals.assign(mesh->positions.size(),
+                                 V3f(n.values[0], n.values[1], n.values[2]));
             break;
         case ParamClass::Uniform:
             for (uint32_t face : mesh->faceOfTriangle) {
@@ -83,7 +83,9 @@ void AttachGridNormals(const PrimVar& n, const GridAxis& u, const GridAxis& v,
                 mesh->cornerNormals.insert(mesh->cornerNormals.end(), 3, V3f(f[0], f[1], f[2]));
             }
             break;
-        default: mesh->normals = AsPoints(EvaluateOnGrid(n, u, v)); break;
+        default:
+            mesh->normals = AsPoints(EvaluateOnGrid(n, u, v));
+            break;
     }
 }
 

@@ -22,11 +22,11 @@ namespace gonio {
 
 struct GridAxis {
     struct Sample {
-        float param = 0;            // the surface parameter here (TriangleMesh::uv)
-        int firstControl = 0;       // weights[k] applies to control (firstControl + k) mod count
+        float param = 0;       // the surface parameter here (TriangleMesh::uv)
+        int firstControl = 0;  // weights[k] applies to control (firstControl + k) mod count
         std::vector<float> weights;
-        int varyingCell = 0;        // blends varying values varyingCell and varyingCell + 1
-        float varyingT = 0;         // (mod varyingCount) with weights 1 − t and t
+        int varyingCell = 0;  // blends varying values varyingCell and varyingCell + 1
+        float varyingT = 0;   // (mod varyingCount) with weights 1 − t and t
     };
     std::vector<Sample> samples;
     std::vector<int> intervalCell;  // uniform index along the axis of each sample interval

@@ -27,16 +27,19 @@ FilmSpec FilmSpec::FromCropWindow(int xres, int yres, float cropXmin, float crop
                                   float cropYmin, float cropYmax, int xsamples, int ysamples,
                                   int channels) {
     FilmSpec spec;
-    spec.xres = xres;
-    spec.yres = yres;
+    spec.xres = xres = std::max(1, xres);
+    spec.yres = yres = std::max(1, yres);
     // RISpec §4.1.1 (RiCropWindow).
     spec.xmin = ClampInt(int(std::ceil(xres * cropXmin)), 0, xres - 1);
     spec.xmax = ClampInt(int(std::ceil(xres * cropXmax - 1.0f)), 0, xres - 1);
     spec.ymin = ClampInt(int(std::ceil(yres * cropYmin)), 0, yres - 1);
     spec.ymax = ClampInt(int(std::ceil(yres * cropYmax - 1.0f)), 0, yres - 1);
+    // A window that rounds to nothing (or is given backwards) keeps one pixel.
+    spec.xmax = std::max(spec.xmax, spec.xmin);
+    spec.ymax = std::max(spec.ymax, spec.ymin);
     spec.xsamples = std::max(1, xsamples);
     spec.ysamples = std::max(1, ysamples);
-    spec.channels = channels;
+    spec.channels = std::max(1, channels);
     spec.depthChannel = channels > kChannelZ ? int(kChannelZ) : -1;
     return spec;
 }

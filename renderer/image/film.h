@@ -41,7 +41,10 @@ struct FilmSpec {
     //   rxmin = clamp(ceil(xres * xmin), 0, xres - 1)
     //   rxmax = clamp(ceil(xres * xmax - 1), 0, xres - 1)     (and the same for y)
     // so pixel column px belongs to the window when xres*xmin <= px < xres*xmax (its left edge),
-    // and two crop windows that share an edge tile the frame without a gap or an overlap.
+    // and two crop windows that share an edge tile the frame without a gap or an overlap. A
+    // window that rounds to no pixel (the scene builder should warn about it) keeps one. Sample
+    // counts below 1 become 1 (RISpec: "sampling rates less than 1 are clamped to 1").
+    // depthChannel is kChannelZ when there are more than 4 channels, else -1.
     static FilmSpec FromCropWindow(int xres, int yres, float cropXmin, float cropXmax,
                                    float cropYmin, float cropYmax, int xsamples, int ysamples,
                                    int channels);

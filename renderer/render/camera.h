@@ -17,7 +17,7 @@ struct CameraRay {
 };
 
 class Camera {
-public:
+  public:
     explicit Camera(const Options& options);
 
     // The ray through raster position (x, y) (pixels from the top-left corner of the frame),
@@ -28,7 +28,7 @@ public:
     // The screen window actually used (explicit, or derived from the frame aspect ratio).
     const float* ScreenWindow() const { return screen_; }
 
-private:
+  private:
     Imath::M44f worldFromCamera_;
     bool perspective_;
     float tanHalfFov_;

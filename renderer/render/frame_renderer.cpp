@@ -123,31 +123,32 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
 
     Progress progress("render", uint64_t(width) * height, settings.progress);
     std::atomic<uint64_t> raysTraced{0};
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(range.min.y, range.max.y + 1, kTileSize, range.min.x,
-                                  range.max.x + 1, kTileSize),
-        [&](const tbb::blocked_range2d<int>& tile) {
-            uint64_t rays = 0;
-            float values[kStandardChannelCount];
-            for (int py = tile.rows().begin(); py < tile.rows().end(); ++py) {
-                for (int px = tile.cols().begin(); px < tile.cols().end(); ++px) {
-                    for (int sy = 0, s = 0; sy < ysamples; ++sy) {
-                        for (int sx = 0; sx < xsamples; ++sx, ++s) {
-                            SampleRandom random(settings.seed, px, py, s);
-                            // Stratified: one jittered sample in each cell of the pixel's grid.
-                            const float x = px + (sx + random.Next()) / xsamples;
-                            const float y = py + (sy + random.Next()) / ysamples;
-                            const float lensU = random.Next(), lensV = random.Next();
-                            const CameraRay ray = camera.GenerateRay(x, y, lensU, lensV);
-                            rays += TraceCameraRay(scene, ray, values);
-                            film.SetSample(px, py, s, x, y, values);
-                        }
-                    }
-                }
-                progress.Advance(tile.cols().size());
-            }
-            raysTraced += rays;
-        });
+    tbb::parallel_for(tbb::blocked_range2d<int>(range.min.y, range.max.y + 1, kTileSize,
+                                                range.min.x, range.max.x + 1, kTileSize),
+                      [&](const tbb::blocked_range2d<int>& tile) {
+                          uint64_t rays = 0;
+                          float values[kStandardChannelCount];
+                          for (int py = tile.rows().begin(); py < tile.rows().end(); ++py) {
+                              for (int px = tile.cols().begin(); px < tile.cols().end(); ++px) {
+                                  for (int sy = 0, s = 0; sy < ysamples; ++sy) {
+                                      for (int sx = 0; sx < xsamples; ++sx, ++s) {
+                                          SampleRandom random(settings.seed, px, py, s);
+                                          // Stratified: one jittered sample in each cell of the
+                                          // pixel's grid.
+                                          const float x = px + (sx + random.Next()) / xsamples;
+                                          const float y = py + (sy + random.Next()) / ysamples;
+                                          const float lensU = random.Next(), lensV = random.Next();
+                                          const CameraRay ray =
+                                              camera.GenerateRay(x, y, lensU, lensV);
+                                          rays += TraceCameraRay(scene, ray, values);
+                                          film.SetSample(px, py, s, x, y, values);
+                                      }
+                                  }
+                              }
+                              progress.Advance(tile.cols().size());
+                          }
+                          raysTraced += rays;
+                      });
     progress.Done();
 
     const Image image = film.Resolve();
@@ -161,8 +162,8 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
                            Quantization{cq.one, cq.min, cq.max, cq.dither},
                            Quantization{dq.one, dq.min, dq.max, dq.dither}, diagnostics);
     if (stats) {
-        stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                             .count();
+        stats->seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats->cameraRays = uint64_t(width) * height * xsamples * ysamples;
         stats->raysTraced = raysTraced;
         stats->width = spec.WindowWidth();

@@ -12,7 +12,7 @@
 namespace gonio {
 
 class Progress {
-public:
+  public:
     Progress(std::string label, uint64_t total, bool enabled);
     ~Progress();
     void Advance(uint64_t amount = 1);
@@ -20,7 +20,7 @@ public:
     void Done();
     double ElapsedSeconds() const;
 
-private:
+  private:
     void Draw(uint64_t done);
 
     std::string label_;

@@ -24,14 +24,14 @@ inline uint64_t HashCombine(uint64_t a, uint64_t b) {
 inline float ToUnitFloat(uint64_t bits) { return (bits >> 40) * (1.0f / 16777216.0f); }
 
 class SampleRandom {
-public:
+  public:
     SampleRandom(uint64_t seed, int px, int py, int sample)
-        : state_(HashCombine(HashCombine(HashCombine(Mix64(seed), uint64_t(uint32_t(px))),
-                                         uint64_t(uint32_t(py))),
-                             uint64_t(sample))) {}
+        : state_(HashCombine(
+              HashCombine(HashCombine(Mix64(seed), uint64_t(uint32_t(px))), uint64_t(uint32_t(py))),
+              uint64_t(sample))) {}
     float Next() { return ToUnitFloat(Mix64(state_ += 0x9e3779b97f4a7c15ull)); }
 
-private:
+  private:
     uint64_t state_;
 };
 

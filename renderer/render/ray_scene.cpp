@@ -67,14 +67,12 @@ void QuadricBounds(const RTCBoundsFunctionArguments* args) {
 
 bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, unsigned i,
                          QuadricHit* hit) {
-    const V3f org(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i),
-                  RTCRayN_org_z(rays, N, i));
-    const V3f dir(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i),
-                  RTCRayN_dir_z(rays, N, i));
+    const V3f org(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i));
+    const V3f dir(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i));
     // An affine map keeps the ray parameter: t is the same in object space.
     return q->quadric->Intersect(TransformPoint(q->objectFromSpace, org),
-                                 TransformVector(q->objectFromSpace, dir), RTCRayN_tnear(rays, N, i),
-                                 RTCRayN_tfar(rays, N, i), hit);
+                                 TransformVector(q->objectFromSpace, dir),
+                                 RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i), hit);
 }
 
 void QuadricIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -207,11 +205,14 @@ RTCGeometry RayScene::Impl::MakeSubdivision(const SubdivisionCage& cage, const M
         void* dst = rtcSetNewGeometryBuffer(g, type, 0, format, elementSize, count);
         std::memcpy(dst, data, elementSize * count);
     };
+    // Embree evaluates subdivision surfaces with 4-wide loads and checks every lane for valid
+    // numbers, so each vertex gets a fourth float, set to zero (with a packed buffer the last
+    // vertex's fourth lane is uninitialised padding, which failed that check at random).
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), cage.positions.size()));
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 4 * sizeof(float), cage.positions.size()));
     for (size_t i = 0; i < cage.positions.size(); ++i) {
         const V3f p = TransformPoint(m, cage.positions[i]);
-        v[3 * i] = p.x, v[3 * i + 1] = p.y, v[3 * i + 2] = p.z;
+        v[4 * i] = p.x, v[4 * i + 1] = p.y, v[4 * i + 2] = p.z, v[4 * i + 3] = 0;
     }
     copy(RTC_BUFFER_TYPE_FACE, RTC_FORMAT_UINT, sizeof(unsigned), cage.faceVertexCounts.data(),
          cage.faceVertexCounts.size());
@@ -264,8 +265,9 @@ RTCGeometry RayScene::Impl::MakeCurves(const CurveSet& curves, const M44f& m) {
             n[3 * i] = nn.x, n[3 * i + 1] = nn.y, n[3 * i + 2] = nn.z;
         }
     }
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), curves.segmentFirst.size()));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
+                                                               RTC_FORMAT_UINT, sizeof(unsigned),
+                                                               curves.segmentFirst.size()));
     std::memcpy(idx, curves.segmentFirst.data(), curves.segmentFirst.size() * sizeof(unsigned));
     return g;
 }

@@ -20,7 +20,7 @@ struct RayHit {
 };
 
 class RayScene {
-public:
+  public:
     RayScene(const Frame& frame, Diagnostics& diagnostics);
     ~RayScene();
     RayScene(const RayScene&) = delete;
@@ -36,7 +36,7 @@ public:
 
     size_t GeometryCount() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

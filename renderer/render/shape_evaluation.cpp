@@ -43,12 +43,22 @@ void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float
     const Stencil* stencil = nullptr;
     Stencil single;
     switch (var.decl.cls) {
-        case ParamClass::Constant: single = Single(0), stencil = &single; break;
-        case ParamClass::Uniform: single = Single(stencils.uniform), stencil = &single; break;
-        case ParamClass::Varying: stencil = &stencils.varying; break;
-        case ParamClass::Vertex: stencil = &stencils.vertex; break;
+        case ParamClass::Constant:
+            single = Single(0), stencil = &single;
+            break;
+        case ParamClass::Uniform:
+            single = Single(stencils.uniform), stencil = &single;
+            break;
+        case ParamClass::Varying:
+            stencil = &stencils.varying;
+            break;
+        case ParamClass::Vertex:
+            stencil = &stencils.vertex;
+            break;
         case ParamClass::FaceVarying:
-        case ParamClass::FaceVertex: stencil = &stencils.faceVarying; break;
+        case ParamClass::FaceVertex:
+            stencil = &stencils.faceVarying;
+            break;
     }
     for (int c = 0; c < n; ++c) out[c] = 0;
     const int count = var.ValueCount();
@@ -132,14 +142,13 @@ ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float 
     hit.N = g.Ng;
     ClassStencils& s = hit.stencils;
     s.uniform = primID < curves.curveOfSegment.size() ? curves.curveOfSegment[primID] : 0;
-    // Varying values sit at segment ends: segment k of the whole set spans values k+curve, k+curve+1.
-    Stencil lin;
-    lin.count = 2;
-    lin.index[0] = static_cast<int>(primID + s.uniform);
-    lin.index[1] = lin.index[0] + 1;
-    lin.weight[0] = 1 - u, lin.weight[1] = u;
-    s.varying = s.faceVarying = lin;
-    s.vertex = lin;
+    // Curve variables are stored per segment, at its two ends (geometry/curves.h).
+    Stencil ends;
+    ends.count = 2;
+    ends.index[0] = static_cast<int>(2 * primID);
+    ends.index[1] = ends.index[0] + 1;
+    ends.weight[0] = 1 - u, ends.weight[1] = u;
+    s.varying = s.vertex = s.faceVarying = ends;
     return hit;
 }
 
@@ -159,10 +168,18 @@ PrimVarSet MeshPrimVars(const TriangleMesh& mesh) {
     for (const MeshVar& mv : mesh.vars) {
         PrimVar var = mv.var;
         switch (mv.rate) {
-            case MeshRate::Constant: var.decl.cls = ParamClass::Constant; break;
-            case MeshRate::PerFace: var.decl.cls = ParamClass::Uniform; break;
-            case MeshRate::PerVertex: var.decl.cls = ParamClass::Vertex; break;
-            case MeshRate::PerCorner: var.decl.cls = ParamClass::FaceVarying; break;
+            case MeshRate::Constant:
+                var.decl.cls = ParamClass::Constant;
+                break;
+            case MeshRate::PerFace:
+                var.decl.cls = ParamClass::Uniform;
+                break;
+            case MeshRate::PerVertex:
+                var.decl.cls = ParamClass::Vertex;
+                break;
+            case MeshRate::PerCorner:
+                var.decl.cls = ParamClass::FaceVarying;
+                break;
         }
         set.vars.push_back(std::move(var));
     }

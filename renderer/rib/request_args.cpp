@@ -54,8 +54,7 @@ std::string DescribeValue(const RibValue& value) {
 // Tries each alternative of a rule's signature in turn; reports the last one's error.
 class RequestMatcher {
   public:
-    RequestMatcher(const RequestRule& rule, const RequestValues& values, int ncomps,
-                   const FileLoc& loc)
+    RequestMatcher(const RequestRule& rule, RequestValues& values, int ncomps, const FileLoc& loc)
         : rule_(rule), values_(values), ncomps_(ncomps), loc_(loc) {}
 
     bool Match(RequestArgs* args, MatchError* error) {
@@ -176,11 +175,11 @@ class RequestMatcher {
             case 'f':
                 return number ? nullptr : "a number";
             case 'i':
-                return number && IsInteger(values_.numbers[value.begin]) ? nullptr : "an integer";
+                return number && IsInteger(values_.Number(value, 0)) ? nullptr : "an integer";
             case 's':
                 return string ? nullptr : "a string";
             case 'h':
-                return string || (number && IsInteger(values_.numbers[value.begin]))
+                return string || (number && IsInteger(values_.Number(value, 0)))
                            ? nullptr
                            : "a handle (an integer or a string)";
             case 'F':
@@ -204,7 +203,7 @@ class RequestMatcher {
 
     bool AllIntegers(const RibValue& value) const {
         for (std::size_t k = 0; k < value.count; ++k)
-            if (!IsInteger(values_.numbers[value.begin + k])) return false;
+            if (!IsInteger(values_.arrays[value.begin][k])) return false;
         return true;
     }
 
@@ -227,16 +226,27 @@ class RequestMatcher {
                 return FailAt(error, token,
                               "expected a parameter name (a string) in the parameter list of " +
                                   std::string(rule_.name) + ", got " + DescribeValue(token));
-            const std::string& name = values_.strings[token.begin];
             if (k + 1 == values.size())
-                return FailAt(error, token, "parameter \"" + name + "\" has no value");
+                return FailAt(error, token,
+                              "parameter \"" + values_.strings[token.begin] + "\" has no value");
+        }
+        BuildParams(first, args);
+        return true;
+    }
+
+    // Only once the request is known to be good: numeric arrays move into their Params.
+    void BuildParams(std::size_t first, RequestArgs* args) {
+        const std::vector<RibValue>& values = Values();
+        for (std::size_t k = first; k < values.size(); k += 2) {
+            const RibValue& token = values[k];
             const RibValue& value = values[k + 1];
             Param param;
-            param.token = name;
+            param.token = values_.strings[token.begin];
             param.loc = FileLoc{loc_.file, token.line, token.column};
-            if (value.IsNumeric()) {
-                const auto begin = values_.numbers.begin() + value.begin;
-                param.numbers.assign(begin, begin + value.count);
+            if (value.kind == ValueKind::Number) {
+                param.numbers.assign(1, values_.numbers[value.begin]);
+            } else if (value.kind == ValueKind::NumberArray) {
+                param.numbers = std::move(values_.arrays[value.begin]);
             } else {
                 const auto begin = values_.strings.begin() + value.begin;
                 param.strings.assign(begin, begin + value.count);
@@ -244,23 +254,22 @@ class RequestMatcher {
             }
             args->params_.push_back(std::move(param));
         }
-        return true;
     }
 
     const RequestRule& rule_;
-    const RequestValues& values_;
+    RequestValues& values_;
     int ncomps_;
     const FileLoc& loc_;
 };
 
-bool MatchRequest(const RequestRule& rule, const RequestValues& values, int ncomps,
-                  const FileLoc& loc, RequestArgs* args, MatchError* error) {
+bool MatchRequest(const RequestRule& rule, RequestValues& values, int ncomps, const FileLoc& loc,
+                  RequestArgs* args, MatchError* error) {
     return RequestMatcher(rule, values, ncomps, loc).Match(args, error);
 }
 
 double RequestArgs::Number(int k) const {
     const Slot& slot = slots_[k];
-    return values_->numbers[slot.value->begin + slot.element];
+    return values_->Number(*slot.value, slot.element);
 }
 
 float RequestArgs::F(int k) const { return ToFloat(Number(k)); }
@@ -281,8 +290,7 @@ RtBasis RequestArgs::B(int k) const {
         basis.name = S(k);
         return basis;
     }
-    for (std::size_t j = 0; j < 16; ++j)
-        basis.matrix[j] = ToFloat(values_->numbers[value.begin + j]);
+    for (std::size_t j = 0; j < 16; ++j) basis.matrix[j] = ToFloat(values_->arrays[value.begin][j]);
     return basis;
 }
 
@@ -290,7 +298,7 @@ std::vector<float> RequestArgs::FA(int k) const {
     const RibValue& value = *slots_[k].value;
     std::vector<float> result(value.count);
     for (std::size_t j = 0; j < value.count; ++j)
-        result[j] = ToFloat(values_->numbers[value.begin + j]);
+        result[j] = ToFloat(values_->arrays[value.begin][j]);
     return result;
 }
 
@@ -298,7 +306,7 @@ std::vector<int> RequestArgs::IA(int k) const {
     const RibValue& value = *slots_[k].value;
     std::vector<int> result(value.count);
     for (std::size_t j = 0; j < value.count; ++j)
-        result[j] = static_cast<int>(values_->numbers[value.begin + j]);
+        result[j] = static_cast<int>(values_->arrays[value.begin][j]);
     return result;
 }
 

@@ -94,8 +94,9 @@ struct MatchError {
 };
 
 // Checks `values` against `rule`; on success fills `args` and returns true, else fills `error`.
-// `ncomps` is the current number of colour components (ColorSamples).
-bool MatchRequest(const RequestRule& rule, const RequestValues& values, int ncomps,
-                  const FileLoc& loc, RequestArgs* args, MatchError* error);
+// `ncomps` is the current number of colour components (ColorSamples). On success the numeric
+// arrays of the parameter list have moved out of `values` into `args`.
+bool MatchRequest(const RequestRule& rule, RequestValues& values, int ncomps, const FileLoc& loc,
+                  RequestArgs* args, MatchError* error);
 
 }  // namespace gonio

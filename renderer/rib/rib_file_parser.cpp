@@ -114,7 +114,11 @@ int RibFileParser::NewString(const char* text, int length) {
 int RibFileParser::LookupRequest(const char* text, int length) {
     lastRequestName_.assign(text, static_cast<std::size_t>(length));
     const RequestRule* rule = FindRequest(lastRequestName_);
-    return rule ? static_cast<int>(rule - AllRequests().data()) : -1;
+    if (rule) return static_cast<int>(rule - AllRequests().data());
+    unknownNames_[nextUnknown_] = lastRequestName_;
+    const int code = -2 - nextUnknown_;
+    nextUnknown_ ^= 1;
+    return code;
 }
 
 void RibFileParser::LexError(int errorLine, int errorColumn, const std::string& message) {
@@ -125,7 +129,7 @@ void RibFileParser::SetLookahead(int token, int tokenLine, int tokenColumn) {
     lookahead_ = token;
     lookaheadLine_ = tokenLine;
     lookaheadColumn_ = tokenColumn;
-    if (token == '[') {  // arrays do not nest, so the last '[' opened the current array
+    if (token == '[' && !inArray_) {  // the '[' that opens an array (they do not nest)
         arrayLine_ = tokenLine;
         arrayColumn_ = tokenColumn;
     }
@@ -154,13 +158,8 @@ void RibFileParser::AddString(int index, int valueLine, int valueColumn) {
 
 void RibFileParser::BeginArray() {
     inArray_ = true;
-    arrayNumbersBegin_ = values_.numbers.size();
-    arrayNumbers_ = arrayStrings_ = 0;
-}
-
-void RibFileParser::ArrayNumber(double number) {
-    values_.numbers.push_back(number);
-    ++arrayNumbers_;
+    arrayNumbers_ = &values_.NewArray(&arrayIndex_);
+    arrayStrings_ = 0;
 }
 
 void RibFileParser::ArrayString(int index) {
@@ -170,7 +169,7 @@ void RibFileParser::ArrayString(int index) {
 
 void RibFileParser::EndArray(int openLine, int openColumn) {
     inArray_ = false;
-    if (arrayNumbers_ && arrayStrings_) {
+    if (!arrayNumbers_->empty() && arrayStrings_) {
         session_.Error(Loc(openLine, openColumn),
                        "array mixes numbers and strings (an array holds one or the other)");
         requestBad_ = true;
@@ -185,8 +184,8 @@ void RibFileParser::EndArray(int openLine, int openColumn) {
         value.count = arrayStrings_;
     } else {
         value.kind = ValueKind::NumberArray;
-        value.begin = arrayNumbersBegin_;
-        value.count = arrayNumbers_;
+        value.begin = arrayIndex_;
+        value.count = arrayNumbers_->size();
     }
     values_.values.push_back(value);
 }
@@ -194,7 +193,7 @@ void RibFileParser::EndArray(int openLine, int openColumn) {
 void RibFileParser::Dispatch(int request, int requestLine, int requestColumn) {
     const FileLoc loc = Loc(requestLine, requestColumn);
     if (request < 0) {
-        session_.Error(loc, "unknown request '" + lastRequestName_ + "'");
+        session_.Error(loc, "unknown request '" + unknownNames_[-2 - request] + "'");
     } else if (!requestBad_) {
         const RequestRule& rule = AllRequests()[static_cast<std::size_t>(request)];
         MatchError error;

@@ -33,8 +33,10 @@ class RibFileParser {
     // Called by the lexer.
     int ReadInput(char* buffer, int maxSize);
     bool ParseNumber(const char* text, int length, double* value);
-    int NewString(const char* text, int length);      // decodes C escapes; returns the pool index
-    int LookupRequest(const char* text, int length);  // a request table index, or -1
+    int NewString(const char* text, int length);  // decodes C escapes; returns the pool index
+    // A request table index, or for an unknown name a negative number that Dispatch turns back
+    // into the name.
+    int LookupRequest(const char* text, int length);
     void LexError(int errorLine, int errorColumn, const std::string& message);
     void SetLookahead(int token, int tokenLine, int tokenColumn);
     bool ShouldStop() const;
@@ -43,7 +45,7 @@ class RibFileParser {
     void AddNumber(double number, int valueLine, int valueColumn);
     void AddString(int index, int valueLine, int valueColumn);
     void BeginArray();
-    void ArrayNumber(double number);
+    void ArrayNumber(double number) { arrayNumbers_->push_back(number); }  // hot: inline
     void ArrayString(int index);
     void EndArray(int openLine, int openColumn);
     void Dispatch(int request, int requestLine, int requestColumn);
@@ -66,13 +68,17 @@ class RibFileParser {
     // The array being read.
     bool inArray_ = false;
     int arrayLine_ = 0, arrayColumn_ = 0;
-    std::size_t arrayNumbersBegin_ = 0, arrayNumbers_ = 0;
+    std::vector<double>* arrayNumbers_ = nullptr;  // its numbers
+    std::size_t arrayIndex_ = 0;
     std::size_t arrayStringsBegin_ = 0, arrayStrings_ = 0;
 
     // The token the grammar is looking at, for syntax error messages.
     int lookahead_ = 0;
     int lookaheadLine_ = 0, lookaheadColumn_ = 0;
     std::string lastRequestName_;  // of the last request name read, known or not
+    // Unknown request names: the current request's and the lookahead's may both be unknown.
+    std::string unknownNames_[2];
+    int nextUnknown_ = 0;
     bool readFailed_ = false;
 };
 

@@ -9,6 +9,9 @@
 %define api.prefix {rib}
 %define api.token.prefix {RIB_}
 %locations
+/* Reduce only when the lookahead allows it, so that a bad token drops the request it ends
+   instead of letting the request be dispatched first. */
+%define lr.default-reduction consistent
 %param {yyscan_t scanner}
 %parse-param {gonio::RibFileParser& parser}
 

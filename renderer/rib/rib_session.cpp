@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 constexpr int kMaxErrors = 100;
 // Deeper ReadArchive nesting than this is almost surely a runaway chain of generated files.
 constexpr std::size_t kMaxArchiveDepth = 64;
-constexpr unsigned kGzipBufferSize = 1 << 17;
+// Smaller than the lexer's reads, so that zlib reads plain files straight into the lexer's buffer.
+constexpr unsigned kGzipBufferSize = 1 << 16;
 
 std::string Canonical(const std::string& path) {
     std::error_code error;

@@ -53,10 +53,10 @@ struct Attributes {
     // transform (camera space is left-handed).
     enum class Orientation { Outside, Inside, LeftHanded, RightHanded };
     Orientation orientation = Orientation::Outside;
-    bool twoSided = true;             // Sides 2
+    bool twoSided = true;  // Sides 2
     bool matte = false;
     PatchBasis ubasis, vbasis;  // bezier unless Basis says otherwise
-    std::string identifier;  // Attribute "identifier" "name"
+    std::string identifier;     // Attribute "identifier" "name"
     // Every Attribute request by name, merged, for the shading language's attribute().
     std::map<std::string, ParamList> user;
 };

@@ -5,13 +5,16 @@
 #include <cmath>
 
 #include "scene/scene_builder_state.h"
+#include "scene/standard_options.h"
 
 namespace gonio {
 namespace {
 
 constexpr float kDegrees = 3.14159265358979323846f / 180.f;
 
-std::string HandleKey(const RtHandle& handle) { return (handle.isString ? "s:" : "i:") + handle.text; }
+std::string HandleKey(const RtHandle& handle) {
+    return (handle.isString ? "s:" : "i:") + handle.text;
+}
 
 }  // namespace
 
@@ -33,8 +36,7 @@ void SceneBuilder::Color(const std::vector<float>& color, const FileLoc& loc) {
 
 void SceneBuilder::Opacity(const std::vector<float>& opacity, const FileLoc& loc) {
     if (static_cast<int>(opacity.size()) != state_->options.colorComponents) {
-        diagnostics_.Error(loc, "Opacity needs " +
-                                    std::to_string(state_->options.colorComponents) +
+        diagnostics_.Error(loc, "Opacity needs " + std::to_string(state_->options.colorComponents) +
                                     " numbers, got " + std::to_string(opacity.size()));
         return;
     }
@@ -63,13 +65,19 @@ void SceneBuilder::SetShader(ShaderInstance* shader, const std::string& name,
 
 void SceneBuilder::LightSource(const std::string& name, const RtHandle& handle,
                                const ParamList& params, const FileLoc& loc) {
-    if (!RequireWorld("LightSource", loc)) return;
     SceneLight light;
     SetShader(&light.light.shader, name, params, loc);
     light.light.handle = handle;
+    if (state_->inWorld)
+        AddLight(std::move(light));
+    else
+        state_->cameraLights.push_back(std::move(light));
+}
+
+void SceneBuilder::AddLight(SceneLight light) {
     const int index = static_cast<int>(state_->frame.lights.size());
+    state_->lightHandles[HandleKey(light.light.handle)] = index;
     state_->frame.lights.push_back(std::move(light));
-    state_->lightHandles[HandleKey(handle)] = index;
     state_->attributes.activeLights.insert(index);
 }
 
@@ -79,7 +87,8 @@ void SceneBuilder::AreaLightSource(const std::string& name, const RtHandle& hand
                           "AreaLightSource is recorded and lights the scene from its origin, as "
                           "a LightSource would");
     LightSource(name, handle, params, loc);
-    if (!state_->frame.lights.empty()) state_->frame.lights.back().light.isArea = true;
+    auto& lights = state_->inWorld ? state_->frame.lights : state_->cameraLights;
+    lights.back().light.isArea = true;
 }
 
 int SceneBuilder::LightIndex(const RtHandle& handle, const FileLoc& loc) {
@@ -147,16 +156,18 @@ void SceneBuilder::Matte(bool on, const FileLoc&) { state_->attributes.matte = o
 
 void SceneBuilder::Orientation(const std::string& orientation, const FileLoc& loc) {
     using O = Attributes::Orientation;
-    static const std::pair<const char*, O> kNames[] = {
-        {"outside", O::Outside}, {"inside", O::Inside}, {"lh", O::LeftHanded}, {"rh", O::RightHanded}};
+    static const std::pair<const char*, O> kNames[] = {{"outside", O::Outside},
+                                                       {"inside", O::Inside},
+                                                       {"lh", O::LeftHanded},
+                                                       {"rh", O::RightHanded}};
     for (const auto& [name, value] : kNames) {
         if (orientation == name) {
             state_->attributes.orientation = value;
             return;
         }
     }
-    diagnostics_.Error(loc, "Orientation must be outside, inside, lh or rh, got \"" + orientation +
-                                "\"");
+    diagnostics_.Error(
+        loc, "Orientation must be outside, inside, lh or rh, got \"" + orientation + "\"");
 }
 
 void SceneBuilder::ReverseOrientation(const FileLoc&) {
@@ -173,23 +184,17 @@ void SceneBuilder::Sides(int sides, const FileLoc& loc) {
     state_->attributes.twoSided = sides == 2;
 }
 
-void SceneBuilder::Attribute(const std::string& name, const ParamList& params,
-                             const FileLoc& loc) {
-    static const char* const kKnown[] = {"identifier", "displacementbound", "trimcurve", "light",
-                                         "visibility", "shade",   "brdflight", "user",
-                                         "dice",       "sides",   "trace",     "render"};
-    bool known = false;
-    for (const char* k : kKnown) known = known || name == k;
-    if (!known) diagnostics_.WarningOnce("Attribute " + name, loc,
-                                         "unknown Attribute \"" + name + "\" (kept for shaders)");
+void SceneBuilder::Attribute(const std::string& name, const ParamList& params, const FileLoc& loc) {
+    if (!IsKnownOptionName(false, name))
+        diagnostics_.WarningOnce("Attribute " + name, loc,
+                                 "unknown Attribute \"" + name + "\" (kept for shaders)");
     ParamList& merged = state_->attributes.user[name];
     for (const Param& p : params) {
         PrimVar var;
-        if (!TypeParam(p, declarations_, state_->options.colorComponents, diagnostics_, &var))
-            continue;
+        if (!TypeOptionParam("Attribute", name, p, &var)) continue;
         if (name == "identifier" && var.decl.name == "name" && !var.strings.empty())
             state_->attributes.identifier = var.strings[0];
-        merged.push_back(p);
+        MergeTypedParam(p, var, &merged);
     }
 }
 
@@ -238,7 +243,9 @@ void SceneBuilder::Transform(const RtMatrix& m, const FileLoc&) {
     state_->transform = ToM44f(m);
 }
 
-void SceneBuilder::ConcatTransform(const RtMatrix& m, const FileLoc&) { ConcatTransform(ToM44f(m)); }
+void SceneBuilder::ConcatTransform(const RtMatrix& m, const FileLoc&) {
+    ConcatTransform(ToM44f(m));
+}
 
 void SceneBuilder::Perspective(float fov, const FileLoc& loc) {
     if (!(fov > 0 && fov < 180)) {
@@ -298,9 +305,9 @@ void SceneBuilder::Skew(float angle, float dx1, float dy1, float dz1, float dx2,
     const Imath::V3f p = perp / perpLen;
     // Points move along d1 in proportion to their coordinate along p̂, the part of d2
     // perpendicular to d1, which turns d2 from angle alpha to alpha - angle off d1.
-    const float k = std::sin(alpha) > 0 ? (std::cos(alpha) / std::sin(alpha) -
-                                           std::cos(target) / std::sin(target))
-                                        : 0;
+    const float k = std::sin(alpha) > 0
+                        ? (std::cos(alpha) / std::sin(alpha) - std::cos(target) / std::sin(target))
+                        : 0;
     M44f m;  // p' = p + k·(p·p̂)·d1 : rows are the images of the basis vectors
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) m[r][c] += k * p[r] * d1[c];

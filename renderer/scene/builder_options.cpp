@@ -4,14 +4,21 @@
 #include <limits>
 
 #include "scene/scene_builder_state.h"
+#include "scene/standard_options.h"
 
 namespace gonio {
+
+void SceneBuilder::Declare(const std::string& name, const std::string& declaration,
+                           const FileLoc& loc) {
+    std::string error;
+    if (!declarations_.Declare(name, declaration, &error)) diagnostics_.Error(loc, error);
+}
 
 void SceneBuilder::Format(int xres, int yres, float pixelAspect, const FileLoc& loc) {
     if (!RequireOptions("Format", loc)) return;
     if (xres <= 0 || yres <= 0) {
-        diagnostics_.Error(loc, "Format needs a positive resolution, got " +
-                                    std::to_string(xres) + "x" + std::to_string(yres));
+        diagnostics_.Error(loc, "Format needs a positive resolution, got " + std::to_string(xres) +
+                                    "x" + std::to_string(yres));
         return;
     }
     state_->options.xres = xres;
@@ -58,8 +65,8 @@ void SceneBuilder::Projection(const std::string& name, const ParamList& params,
                               const FileLoc& loc) {
     if (!RequireOptions("Projection", loc)) return;
     if (name != "perspective" && name != "orthographic") {
-        diagnostics_.Error(loc, "Projection \"" + name +
-                                    "\" is not supported (perspective, orthographic)");
+        diagnostics_.Error(
+            loc, "Projection \"" + name + "\" is not supported (perspective, orthographic)");
         return;
     }
     state_->options.projection = name;
@@ -105,7 +112,9 @@ void SceneBuilder::Shutter(float open, float close, const FileLoc& loc) {
     state_->options.shutterClose = close;
 }
 
-void SceneBuilder::PixelVariance(float, const FileLoc& loc) { IgnoredRequest("PixelVariance", loc); }
+void SceneBuilder::PixelVariance(float, const FileLoc& loc) {
+    IgnoredRequest("PixelVariance", loc);
+}
 
 void SceneBuilder::PixelSamples(float xsamples, float ysamples, const FileLoc& loc) {
     if (!RequireOptions("PixelSamples", loc)) return;
@@ -194,20 +203,49 @@ void SceneBuilder::RelativeDetail(float, const FileLoc& loc) {
     IgnoredRequest("RelativeDetail", loc);
 }
 
+bool SceneBuilder::TypeOptionParam(const std::string& request, const std::string& name,
+                                   const Param& param, PrimVar* var) {
+    const int ncomps = state_->options.colorComponents;
+    std::string unused;
+    const bool inline_ = param.token.find(' ') != std::string::npos;
+    if (inline_ || declarations_.Resolve(param.token, &unused))
+        return TypeParam(param, declarations_, ncomps, diagnostics_, var);
+    const std::string standard = StandardParamDeclaration(request == "Option", name, param.token);
+    if (standard.empty()) {
+        diagnostics_.WarningOnce(
+            request + " " + name + " " + param.token, param.loc,
+            request + " \"" + name + "\": unknown parameter \"" + param.token + "\" ignored");
+        return false;
+    }
+    Param typed = param;
+    typed.token = standard + " " + param.token;
+    return TypeParam(typed, declarations_, ncomps, diagnostics_, var);
+}
+
+void MergeTypedParam(const Param& param, const PrimVar& var, ParamList* merged) {
+    // The token is stored with its full type so that later readers need no declaration table.
+    Param typed = param;
+    typed.token = std::string(ToString(var.decl.cls)) + " " + ToString(var.decl.type) +
+                  (var.decl.arraySize > 1 ? "[" + std::to_string(var.decl.arraySize) + "]" : "") +
+                  " " + var.decl.name;
+    for (Param& old : *merged) {
+        if (old.token == typed.token) {
+            old = std::move(typed);
+            return;
+        }
+    }
+    merged->push_back(std::move(typed));
+}
+
 void SceneBuilder::Option(const std::string& name, const ParamList& params, const FileLoc& loc) {
     if (!RequireOptions("Option", loc)) return;
+    if (!IsKnownOptionName(true, name))
+        diagnostics_.WarningOnce("Option " + name, loc, "unknown Option \"" + name + "\" ignored");
     ParamList& merged = state_->options.user[name];
     for (const Param& p : params) {
         PrimVar var;
-        if (!TypeParam(p, declarations_, state_->options.colorComponents, diagnostics_, &var))
-            continue;
-        bool replaced = false;
-        for (Param& old : merged) {
-            std::string ignored;
-            auto oldDecl = declarations_.Resolve(old.token, &ignored);
-            if (oldDecl && oldDecl->name == var.decl.name) old = p, replaced = true;
-        }
-        if (!replaced) merged.push_back(p);
+        if (!TypeOptionParam("Option", name, p, &var)) continue;
+        MergeTypedParam(p, var, &merged);
     }
 }
 

@@ -3,10 +3,14 @@
 
 #include <Imath/ImathMatrixAlgo.h>
 
+#include "geometry/curves.h"
+#include "geometry/nurbs.h"
 #include "geometry/patches.h"
+#include "geometry/points.h"
 #include "geometry/polygons.h"
 #include "geometry/primvar_eval.h"
 #include "geometry/quadrics.h"
+#include "geometry/subdivision.h"
 #include "scene/scene_builder_state.h"
 
 namespace gonio {
@@ -36,10 +40,18 @@ void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
     const bool leftHanded = cameraFromObject.determinant() > 0;
     using O = Attributes::Orientation;
     switch (state_->attributes.orientation) {
-        case O::Outside: shape.flipNormals = false; break;
-        case O::Inside: shape.flipNormals = true; break;
-        case O::LeftHanded: shape.flipNormals = !leftHanded; break;
-        case O::RightHanded: shape.flipNormals = leftHanded; break;
+        case O::Outside:
+            shape.flipNormals = false;
+            break;
+        case O::Inside:
+            shape.flipNormals = true;
+            break;
+        case O::LeftHanded:
+            shape.flipNormals = !leftHanded;
+            break;
+        case O::RightHanded:
+            shape.flipNormals = leftHanded;
+            break;
     }
     if (state_->openObject)
         state_->openObject->shapes.push_back(std::move(shape));
@@ -105,6 +117,52 @@ void SceneBuilder::PatchMesh(const std::string& type, int nu, const std::string&
     const Attributes& a = state_->attributes;
     AddGeometry("PatchMesh", MakePatchMesh(type, nu, uwrap, nv, vwrap, a.ubasis, a.vbasis, vars),
                 loc);
+}
+
+void SceneBuilder::NuPatch(int nu, int uorder, const std::vector<float>& uknot, float umin,
+                           float umax, int nv, int vorder, const std::vector<float>& vknot,
+                           float vmin, float vmax, const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("NuPatch", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("NuPatch",
+                MakeNuPatch(nu, uorder, uknot, umin, umax, nv, vorder, vknot, vmin, vmax, vars),
+                loc);
+}
+
+void SceneBuilder::SubdivisionMesh(const std::string& scheme, const std::vector<int>& nverts,
+                                   const std::vector<int>& verts,
+                                   const std::vector<std::string>& tags,
+                                   const std::vector<int>& nargs, const std::vector<int>& intargs,
+                                   const std::vector<float>& floatargs, const ParamList& params,
+                                   const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("SubdivisionMesh", loc) || !TypeVars(params, &vars)) return;
+    std::vector<std::string> notes;
+    auto cage =
+        MakeSubdivisionMesh(scheme, nverts, verts, tags, nargs, intargs, floatargs, vars, &notes);
+    for (const std::string& note : notes)
+        diagnostics_.WarningOnce("SubdivisionMesh " + note, loc, "SubdivisionMesh: " + note);
+    AddGeometry("SubdivisionMesh", std::move(cage), loc);
+}
+
+// ---- points and curves ----------------------------------------------------------------------
+
+void SceneBuilder::Points(const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("Points", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("Points", MakePoints(vars), loc);
+}
+
+void SceneBuilder::Curves(const std::string& type, const std::vector<int>& nvertices,
+                          const std::string& wrap, const ParamList& params, const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("Curves", loc) || !TypeVars(params, &vars)) return;
+    AddGeometry("Curves", MakeCurves(type, nvertices, wrap, state_->attributes.vbasis, vars), loc);
+}
+
+void SceneBuilder::Geometry(const std::string& type, const ParamList&, const FileLoc& loc) {
+    diagnostics_.WarningOnce("Geometry " + type, loc,
+                             "Geometry \"" + type + "\" is not supported: skipped");
 }
 
 // ---- quadrics -------------------------------------------------------------------------------
@@ -199,32 +257,13 @@ void SceneBuilder::MakeShadow(const std::string&, const std::string&, const Para
     IgnoredRequest("MakeShadow (shadows are ray traced)", loc);
 }
 
-void SceneBuilder::ErrorHandler(const std::string&, const FileLoc& loc) {
-    IgnoredRequest("ErrorHandler", loc);
+void SceneBuilder::ErrorHandler(const std::string& handler, const FileLoc& loc) {
+    if (handler != "print" && handler != "ignore" && handler != "abort") {
+        diagnostics_.Error(loc, "ErrorHandler must be \"print\", \"ignore\" or \"abort\", got \"" +
+                                    handler + "\"");
+        return;
+    }
+    state_->options.errorHandler = handler;
 }
 
-}  // namespace gonio
-namespace gonio {
-void SceneBuilder::NuPatch(int, int, const std::vector<float>&, float, float, int, int,
-                           const std::vector<float>&, float, float, const ParamList&,
-                           const FileLoc& loc) {
-    diagnostics_.Error(loc, "NuPatch: TEMPORARY");
-}
-void SceneBuilder::SubdivisionMesh(const std::string&, const std::vector<int>&,
-                                   const std::vector<int>&, const std::vector<std::string>&,
-                                   const std::vector<int>&, const std::vector<int>&,
-                                   const std::vector<float>&, const ParamList&,
-                                   const FileLoc& loc) {
-    diagnostics_.Error(loc, "SubdivisionMesh: TEMPORARY");
-}
-void SceneBuilder::Points(const ParamList&, const FileLoc& loc) {
-    diagnostics_.Error(loc, "Points: TEMPORARY");
-}
-void SceneBuilder::Curves(const std::string&, const std::vector<int>&, const std::string&,
-                          const ParamList&, const FileLoc& loc) {
-    diagnostics_.Error(loc, "Curves: TEMPORARY");
-}
-void SceneBuilder::Geometry(const std::string&, const ParamList&, const FileLoc& loc) {
-    diagnostics_.Error(loc, "Geometry: TEMPORARY");
-}
 }  // namespace gonio

@@ -28,7 +28,7 @@ struct Options {
     // Camera and image.
     int xres = 640, yres = 480;  // RISpec leaves the default to the device; Aqsis uses 640x480
     float pixelAspect = 1;
-    float frameAspect = 0;       // 0: derived from the format
+    float frameAspect = 0;  // 0: derived from the format
     bool screenWindowSet = false;
     float screenWindow[4] = {-1, 1, -1, 1};  // left right bottom top
     float cropWindow[4] = {0, 1, 0, 1};      // xmin xmax ymin ymax (NDC)
@@ -45,6 +45,10 @@ struct Options {
     std::vector<DisplayRequest> displays;
     int colorComponents = 3;  // ColorSamples
     std::string hider = "hidden";
+    // ErrorHandler: "print" (RISpec's default: report and go on, skipping the bad request),
+    // "ignore" (the same; messages are still printed), or "abort" (no frame is rendered once an
+    // error has been reported).
+    std::string errorHandler = "print";
     // The transform current at WorldBegin: camera space from world space (RIB row vectors).
     Imath::M44f cameraFromWorld;
     // Every Option request by name, merged (searchpath, BRDFLight, statistics, ...).

@@ -45,8 +45,8 @@ bool SceneBuilder::RequireWorld(const char* request, const FileLoc& loc) {
 
 bool SceneBuilder::RequireOptions(const char* request, const FileLoc& loc) {
     if (!state_->inWorld) return true;
-    diagnostics_.Error(loc, std::string(request) +
-                                " is an option and is not valid inside WorldBegin/WorldEnd");
+    diagnostics_.Error(
+        loc, std::string(request) + " is an option and is not valid inside WorldBegin/WorldEnd");
     return false;
 }
 
@@ -114,6 +114,10 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
     state_->frame.namedSpaces["camera"] = worldFromCamera;
     state_->transform = M44f();
     state_->lightHandles.clear();
+    for (SceneLight light : state_->cameraLights) {
+        light.light.shader.worldFromShader = light.light.shader.worldFromShader * worldFromCamera;
+        AddLight(std::move(light));
+    }
 }
 
 void SceneBuilder::WorldEnd(const FileLoc& loc) {
@@ -180,8 +184,8 @@ void SceneBuilder::ObjectEnd(const FileLoc& loc) {
 void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
     auto it = state_->objects.find(handle.text);
     if (it == state_->objects.end()) {
-        diagnostics_.Error(loc, "ObjectInstance: no object was defined with handle " +
-                                    HandleText(handle));
+        diagnostics_.Error(
+            loc, "ObjectInstance: no object was defined with handle " + HandleText(handle));
         return;
     }
     if (state_->openObject) {

@@ -29,6 +29,9 @@ class SceneBuilder : public RiTarget {
     // Reports blocks left open at the end of the input.
     void Finish(const FileLoc& endOfInput);
 
+    void Declare(const std::string& name, const std::string& declaration,
+                 const FileLoc& loc) override;
+
     // Block structure (RISpec §4).
     void FrameBegin(int frame, const FileLoc& loc) override;
     void FrameEnd(const FileLoc& loc) override;
@@ -199,6 +202,9 @@ class SceneBuilder : public RiTarget {
     void SetShader(ShaderInstance* shader, const std::string& name, const ParamList& params,
                    const FileLoc& loc);
     int LightIndex(const RtHandle& handle, const FileLoc& loc);
+    void AddLight(SceneLight light);
+    bool TypeOptionParam(const std::string& request, const std::string& name, const Param& param,
+                         PrimVar* var);
     // Adds a primitive's shape with the current attributes and transform.
     void AddShape(ShapeGeometry geometry, const FileLoc& loc);
     bool TypeVars(const ParamList& params, PrimVarSet* vars);

@@ -31,11 +31,18 @@ struct SceneBuilder::State {
     Frame frame;
     std::map<std::string, M44f> namedSpaces;  // current base space from the named space
     std::map<std::string, int> lightHandles;
+    // Lights declared before WorldBegin (Aqsis and PRMan allow it), in camera space; they join
+    // every following world.
+    std::vector<SceneLight> cameraLights;
     std::map<std::string, std::shared_ptr<ObjectDefinition>> objects;
     std::shared_ptr<ObjectDefinition> openObject;
     std::string openObjectHandle;
     int motionRequestCount = -1;  // requests seen inside a MotionBegin block; -1 outside
 };
+
+// Adds an Option or Attribute parameter to the merged list of its name, replacing an earlier
+// value of the same parameter.
+void MergeTypedParam(const Param& param, const PrimVar& var, ParamList* merged);
 
 inline M44f ToM44f(const RtMatrix& m) {
     return M44f(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11], m[12],

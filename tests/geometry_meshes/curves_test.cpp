@@ -36,7 +36,7 @@ V3f CatmullRomAt(const std::vector<V3f>& p, int f, float t) {
                    (3.0f * p1 - p0 - 3.0f * p2 + p3) * t * t * t);
 }
 
-const std::vector<V3f> kWiggle = {{0, 0, 0}, {1, 2, 0}, {2, -1, 1}, {3, 0, 2},
+const std::vector<V3f> kWiggle = {{0, 0, 0}, {1, 2, 0},  {2, -1, 1}, {3, 0, 2},
                                   {4, 3, 0}, {5, 1, -1}, {6, 0, 0}};
 
 TEST(Curves, BezierControlPointsPassThroughUnchanged) {
@@ -89,8 +89,8 @@ TEST(Curves, PeriodicBSplineWrapsAround) {
 }
 
 TEST(Curves, VaryingWidthIsLinearAlongEachSegment) {
-    auto vars = WithP(kWiggle, {Var("width", ParamClass::Varying, ParamType::Float, 1,
-                                    {0.2f, 0.4f, 1.0f})});
+    auto vars = WithP(kWiggle,
+                      {Var("width", ParamClass::Varying, ParamType::Float, 1, {0.2f, 0.4f, 1.0f})});
     auto r = MakeCurves("cubic", {7}, "nonperiodic", BezierBasis(), vars);
     ASSERT_TRUE(r.Ok()) << r.Error();
     const std::vector<float>& radii = r.Value().radii;
@@ -109,9 +109,10 @@ TEST(Curves, LinearPeriodicCurvesConstantWidthAndVars) {
     std::vector<V3f> both = a;
     both.insert(both.end(), b.begin(), b.end());
     std::vector<float> s = {0, 1, 2, 10, 11, 12, 13};  // varying: one per vertex when periodic
-    auto vars = WithP(both, {Var("constantwidth", ParamClass::Constant, ParamType::Float, 1, {0.5f}),
-                             Var("s", ParamClass::Varying, ParamType::Float, 1, s),
-                             Var("Kd", ParamClass::Uniform, ParamType::Float, 1, {1, 2})});
+    auto vars =
+        WithP(both, {Var("constantwidth", ParamClass::Constant, ParamType::Float, 1, {0.5f}),
+                     Var("s", ParamClass::Varying, ParamType::Float, 1, s),
+                     Var("Kd", ParamClass::Uniform, ParamType::Float, 1, {1, 2})});
     auto r = MakeCurves("linear", {3, 4}, "periodic", BezierBasis(), vars);
     ASSERT_TRUE(r.Ok()) << r.Error();
     const CurveSet& set = r.Value();
@@ -126,8 +127,8 @@ TEST(Curves, LinearPeriodicCurvesConstantWidthAndVars) {
     const PrimVar* sv = set.vars.Find("s");
     ASSERT_NE(sv, nullptr);
     ASSERT_EQ(sv->values.size(), 14u);
-    EXPECT_EQ(sv->values[4], 2.0f);   // segment 2 of curve 0 runs from s = 2 ...
-    EXPECT_EQ(sv->values[5], 0.0f);   // ... back to s = 0
+    EXPECT_EQ(sv->values[4], 2.0f);  // segment 2 of curve 0 runs from s = 2 ...
+    EXPECT_EQ(sv->values[5], 0.0f);  // ... back to s = 0
     EXPECT_EQ(sv->values[13], 10.0f);
     EXPECT_EQ(set.vars.Find("Kd")->values.size(), 2u);
     EXPECT_EQ(set.vars.Find("constantwidth"), nullptr);
@@ -144,19 +145,23 @@ TEST(Curves, NormalsMakeOrientedRibbons) {
 }
 
 TEST(Curves, BadInputIsReported) {
-    EXPECT_FALSE(MakeCurves("cubic", {5}, "nonperiodic", BezierBasis(),
-                            WithP(std::vector<V3f>(5, V3f(0)))).Ok());
+    EXPECT_FALSE(
+        MakeCurves("cubic", {5}, "nonperiodic", BezierBasis(), WithP(std::vector<V3f>(5, V3f(0))))
+            .Ok());
     EXPECT_FALSE(MakeCurves("quadratic", {4}, "nonperiodic", BezierBasis(),
-                            WithP(std::vector<V3f>(4, V3f(0)))).Ok());
-    EXPECT_FALSE(MakeCurves("linear", {1}, "nonperiodic", BezierBasis(),
-                            WithP(std::vector<V3f>(1, V3f(0)))).Ok());
-    auto badWidth = MakeCurves("cubic", {7}, "nonperiodic", BezierBasis(),
-                               WithP(kWiggle, {Var("width", ParamClass::Varying, ParamType::Float,
-                                                   1, {1, 1})}));
+                            WithP(std::vector<V3f>(4, V3f(0))))
+                     .Ok());
+    EXPECT_FALSE(
+        MakeCurves("linear", {1}, "nonperiodic", BezierBasis(), WithP(std::vector<V3f>(1, V3f(0))))
+            .Ok());
+    auto badWidth = MakeCurves(
+        "cubic", {7}, "nonperiodic", BezierBasis(),
+        WithP(kWiggle, {Var("width", ParamClass::Varying, ParamType::Float, 1, {1, 1})}));
     ASSERT_FALSE(badWidth.Ok());
     EXPECT_NE(badWidth.Error().find("width"), std::string::npos);
-    EXPECT_FALSE(MakeCurves("linear", {4}, "nonperiodic", BezierBasis(),
-                            WithP(std::vector<V3f>(3, V3f(0)))).Ok());
+    EXPECT_FALSE(
+        MakeCurves("linear", {4}, "nonperiodic", BezierBasis(), WithP(std::vector<V3f>(3, V3f(0))))
+            .Ok());
 }
 
 TEST(Points, WidthsAndDefaults) {
@@ -167,15 +172,15 @@ TEST(Points, WidthsAndDefaults) {
     auto constant = MakePoints(
         WithP(p, {Var("constantwidth", ParamClass::Constant, ParamType::Float, 1, {0.1f})}));
     EXPECT_EQ(constant.Value().radii, (std::vector<float>{0.05f, 0.05f}));
-    auto varying = MakePoints(WithP(
-        p, {Var("width", ParamClass::Varying, ParamType::Float, 1, {2, 4}),
-            Var("Cs", ParamClass::Varying, ParamType::Color, 3, {1, 0, 0, 0, 1, 0})}));
+    auto varying = MakePoints(
+        WithP(p, {Var("width", ParamClass::Varying, ParamType::Float, 1, {2, 4}),
+                  Var("Cs", ParamClass::Varying, ParamType::Color, 3, {1, 0, 0, 0, 1, 0})}));
     ASSERT_TRUE(varying.Ok());
     EXPECT_EQ(varying.Value().radii, (std::vector<float>{1, 2}));
     EXPECT_NE(varying.Value().vars.Find("Cs"), nullptr);
     EXPECT_EQ(varying.Value().vars.Find("width"), nullptr);
-    EXPECT_FALSE(MakePoints(WithP(p, {Var("width", ParamClass::Varying, ParamType::Float, 1, {2})}))
-                     .Ok());
+    EXPECT_FALSE(
+        MakePoints(WithP(p, {Var("width", ParamClass::Varying, ParamType::Float, 1, {2})})).Ok());
     EXPECT_FALSE(MakePoints(PrimVarSet{}).Ok());
 }
 

@@ -64,7 +64,8 @@ TEST(Patch, BilinearInterpolatesCornersAndVaryingValues) {
     ASSERT_EQ(m.uv.size(), m.positions.size());
     for (size_t i = 0; i < m.positions.size(); ++i) {
         const float u = m.uv[i].x, v = m.uv[i].y;
-        const V3f expected = (1 - v) * ((1 - u) * p[0] + u * p[1]) + v * ((1 - u) * p[2] + u * p[3]);
+        const V3f expected =
+            (1 - v) * ((1 - u) * p[0] + u * p[1]) + v * ((1 - u) * p[2] + u * p[3]);
         EXPECT_NEAR((m.positions[i] - expected).length(), 0, 1e-5);
         const float* c = cs->var.Value(static_cast<int>(i));
         EXPECT_NEAR(c[0], (1 - u) * (1 - v) + u * v, 1e-5);
@@ -165,9 +166,9 @@ TEST(PatchMesh, BSplineMeshIsContinuousAcrossPatches) {
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 7; ++i) p.push_back(V3f(float(i), float(j), d(rng)));
     std::vector<float> kd = {0.1f, 0.2f, 0.3f, 0.4f};
-    auto r = MakePatchMesh("bicubic", 7, "nonperiodic", 4, "nonperiodic", BSplineBasis(),
-                           BSplineBasis(),
-                           WithP(p, {Var("Kd", ParamClass::Uniform, ParamType::Float, 1, kd)}));
+    auto r =
+        MakePatchMesh("bicubic", 7, "nonperiodic", 4, "nonperiodic", BSplineBasis(), BSplineBasis(),
+                      WithP(p, {Var("Kd", ParamClass::Uniform, ParamType::Float, 1, kd)}));
     ASSERT_TRUE(r.Ok()) << r.Error();
     const TriangleMesh& m = r.Value();
     const int columns = 4 * 16 + 1;
@@ -186,7 +187,8 @@ TEST(PatchMesh, BSplineMeshIsContinuousAcrossPatches) {
         // Across the boundary the slope changes no more than between neighbours on either
         // side (a kink would change it by O(h), not O(h²)).
         const float across = (slope(c) - slope(c - 1)).length();
-        const float within = (slope(c - 1) - slope(c - 2)).length() + (slope(c + 1) - slope(c)).length();
+        const float within =
+            (slope(c - 1) - slope(c - 2)).length() + (slope(c + 1) - slope(c)).length();
         EXPECT_LT(across, 0.75f * within);
     }
     // Uniform values follow the patches: triangles in the first column of cells are patch 0.
@@ -206,9 +208,9 @@ TEST(PatchMesh, PeriodicWrapClosesTheSurfaceExactly) {
         }
     std::vector<float> cs(8 * 2 * 3);
     for (int i = 0; i < 16; ++i) cs[3 * i] = float(i % 8);  // red = u corner number
-    auto r = MakePatchMesh("bicubic", 8, "periodic", 4, "nonperiodic", BSplineBasis(),
-                           BSplineBasis(),
-                           WithP(p, {Var("Cs", ParamClass::Varying, ParamType::Color, 3, cs)}));
+    auto r =
+        MakePatchMesh("bicubic", 8, "periodic", 4, "nonperiodic", BSplineBasis(), BSplineBasis(),
+                      WithP(p, {Var("Cs", ParamClass::Varying, ParamType::Color, 3, cs)}));
     ASSERT_TRUE(r.Ok()) << r.Error();
     const TriangleMesh& m = r.Value();
     const int columns = 8 * 16 + 1;

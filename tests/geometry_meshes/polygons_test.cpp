@@ -83,9 +83,9 @@ TEST(Polygon, CollinearAndDuplicateVerticesAddNoSlivers) {
 
 TEST(GeneralPolygon, SquareWithTwoHoles) {
     // 10×10 square with a 2×2 hole and a triangular hole (area 2), given in either direction.
-    const std::vector<V3f> pts = {{0, 0, 0},  {10, 0, 0}, {10, 10, 0}, {0, 10, 0},  // outline
-                                  {2, 2, 0},  {2, 4, 0},  {4, 4, 0},   {4, 2, 0},   // clockwise
-                                  {6, 6, 0},  {8, 6, 0},  {6, 8, 0}};               // ccw
+    const std::vector<V3f> pts = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0},  // outline
+                                  {2, 2, 0}, {2, 4, 0},  {4, 4, 0},   {4, 2, 0},   // clockwise
+                                  {6, 6, 0}, {8, 6, 0},  {6, 8, 0}};               // ccw
     auto r = MakeGeneralPolygon({4, 4, 3}, WithP(pts));
     ASSERT_TRUE(r.Ok()) << r.Error();
     EXPECT_NEAR(MeshArea(r.Value()), 100.0 - 4.0 - 2.0, 1e-4);
@@ -96,8 +96,8 @@ TEST(GeneralPolygon, SquareWithTwoHoles) {
 
 TEST(GeneralPolygon, ConcaveOutlineWithHoleInItsArm) {
     // An L shape, area 3·1 + 1·2 = 5, with a 0.5×0.5 hole in the upper arm.
-    const std::vector<V3f> pts = {{0, 0, 0},      {3, 0, 0},      {3, 1, 0},  {1, 1, 0},
-                                  {1, 3, 0},      {0, 3, 0},      {0.25f, 2, 0}, {0.75f, 2, 0},
+    const std::vector<V3f> pts = {{0, 0, 0},        {3, 0, 0},       {3, 1, 0},     {1, 1, 0},
+                                  {1, 3, 0},        {0, 3, 0},       {0.25f, 2, 0}, {0.75f, 2, 0},
                                   {0.75f, 2.5f, 0}, {0.25f, 2.5f, 0}};
     auto r = MakeGeneralPolygon({6, 4}, WithP(pts));
     ASSERT_TRUE(r.Ok());
@@ -110,13 +110,12 @@ TEST(PointsPolygons, SharedVerticesAndClassMapping) {
     const std::vector<V3f> pts = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
     std::vector<float> st;
     for (int i = 0; i < 8; ++i) st.insert(st.end(), {float(i), float(10 * i)});
-    auto vars = WithP(pts, {Var("Kd", ParamClass::Uniform, ParamType::Float, 1, {0.25f, 0.75f}),
-                            Var("Cs", ParamClass::Varying, ParamType::Color, 3,
-                                std::vector<float>(18, 0.5f)),
-                            Var("st", ParamClass::FaceVarying, ParamType::Float, 2, st),
-                            Var("id", ParamClass::Constant, ParamType::Float, 1, {7}),
-                            Var("N", ParamClass::Vertex, ParamType::Normal, 3,
-                                std::vector<float>(18, 1.0f))});
+    auto vars = WithP(
+        pts, {Var("Kd", ParamClass::Uniform, ParamType::Float, 1, {0.25f, 0.75f}),
+              Var("Cs", ParamClass::Varying, ParamType::Color, 3, std::vector<float>(18, 0.5f)),
+              Var("st", ParamClass::FaceVarying, ParamType::Float, 2, st),
+              Var("id", ParamClass::Constant, ParamType::Float, 1, {7}),
+              Var("N", ParamClass::Vertex, ParamType::Normal, 3, std::vector<float>(18, 1.0f))});
     auto r = MakePointsPolygons({4, 4}, {0, 1, 4, 3, 1, 2, 5, 4}, vars);
     ASSERT_TRUE(r.Ok()) << r.Error();
     const TriangleMesh& m = r.Value();
@@ -156,13 +155,38 @@ TEST(PointsPolygons, FaceVaryingNormalsBecomeCornerNormals) {
 }
 
 TEST(PointsGeneralPolygons, FacesWithAndWithoutHoles) {
-    const std::vector<V3f> pts = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0},
-                                  {1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}, {5, 0, 0}};
-    auto r = MakePointsGeneralPolygons({2, 1}, {4, 4, 3}, {0, 1, 2, 3, 4, 5, 6, 7, 1, 8, 2},
-                                       WithP(pts));
+    const std::vector<V3f> pts = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {1, 1, 0},
+                                  {1, 3, 0}, {3, 3, 0}, {3, 1, 0}, {5, 0, 0}};
+    auto r =
+        MakePointsGeneralPolygons({2, 1}, {4, 4, 3}, {0, 1, 2, 3, 4, 5, 6, 7, 1, 8, 2}, WithP(pts));
     ASSERT_TRUE(r.Ok()) << r.Error();
     EXPECT_NEAR(MeshArea(r.Value()), 16.0 - 4.0 + 2.0, 1e-5);
     ExpectWoundLike(r.Value(), V3f(0, 0, 1));
+}
+
+TEST(GeneralPolygon, CombWithManyHolesInTiltedPlane) {
+    // A comb of 20 teeth (strongly concave) with a square hole in each tooth's base block,
+    // placed in a tilted plane far from the origin. Area: base 20×1 + teeth 20·(0.5×2) − holes.
+    const V3f origin(100, -50, 30),
+        ex = V3f(2, 1, 0).normalized(),
+        ey = V3f(-1, 2, 3).normalized().cross(ex).cross(ex).normalized();
+    auto at = [&](float x, float y) { return origin + ex * x + ey * y; };
+    std::vector<V3f> pts = {at(0, 0), at(20, 0)};
+    for (int t = 19; t >= 0; --t)
+        for (V2f q : {V2f(t + 1.0f, 1), V2f(t + 1.0f, 3), V2f(t + 0.5f, 3), V2f(t + 0.5f, 1)})
+            pts.push_back(at(q.x, q.y));
+    pts.push_back(at(0, 1));
+    std::vector<int> loops = {static_cast<int>(pts.size())};
+    for (int t = 0; t < 20; ++t) {
+        for (V2f q :
+             {V2f(t + 0.3f, 0.3f), V2f(t + 0.3f, 0.7f), V2f(t + 0.7f, 0.7f), V2f(t + 0.7f, 0.3f)})
+            pts.push_back(at(q.x, q.y));
+        loops.push_back(4);
+    }
+    auto r = MakeGeneralPolygon(loops, WithP(pts));
+    ASSERT_TRUE(r.Ok());
+    EXPECT_NEAR(MeshArea(r.Value()), 20.0 + 20.0 - 20 * 0.16, 1e-3);
+    ExpectWoundLike(r.Value(), ey.cross(ex) * -1.0f);
 }
 
 TEST(PolygonErrors, BadInputIsReported) {
@@ -182,8 +206,8 @@ TEST(PolygonErrors, BadInputIsReported) {
 
 TEST(Polygon, HomogeneousPositionsAreDividedByW) {
     PrimVarSet vars;
-    vars.vars.push_back(Var("Pw", ParamClass::Vertex, ParamType::HPoint, 4,
-                            {0, 0, 0, 2, 4, 0, 0, 2, 0, 4, 0, 2}));
+    vars.vars.push_back(
+        Var("Pw", ParamClass::Vertex, ParamType::HPoint, 4, {0, 0, 0, 2, 4, 0, 0, 2, 0, 4, 0, 2}));
     auto r = MakePolygon(vars);
     ASSERT_TRUE(r.Ok());
     EXPECT_EQ(r.Value().positions[1], V3f(2, 0, 0));

@@ -22,10 +22,11 @@ struct QuadricCase {
     std::function<std::unique_ptr<Quadric>()> make;
     std::function<double(const V3d&)> implicit;  // zero on the surface
     std::function<V3d(const V3d&)> outside;      // RISpec's "outward" at a surface point
-    double orientation = 1;  // +1: Ng points outside; −1: the parameters turn it inside out
-    double scale = 1;        // the shape's size
-    bool uniqueUV = true;    // each surface point has one (u, v)
-    bool clipU = false;      // thetamax < 360: u outside [0, 1] lies off the surface
+    // +1: Ng points outside; −1: the parameters turn it inside out; 0: no outside to speak of
+    double orientation = 1;
+    double scale = 1;                     // the shape's size
+    bool uniqueUV = true;                 // each surface point has one (u, v)
+    bool clipU = false;                   // thetamax < 360: u outside [0, 1] lies off the surface
     bool clipV0 = false, clipV1 = false;  // likewise for v < 0 and v > 1
 };
 
@@ -34,8 +35,8 @@ inline std::ostream& operator<<(std::ostream& os, const QuadricCase& c) { return
 inline double Rho2(const V3d& p) { return p.x * p.x + p.y * p.y; }
 inline V3d Radial(const V3d& p) { return V3d(p.x, p.y, 0); }
 
-inline QuadricCase SphereCase(std::string name, double r, double zmin, double zmax,
-                              double thetamax, double orientation) {
+inline QuadricCase SphereCase(std::string name, double r, double zmin, double zmax, double thetamax,
+                              double orientation) {
     QuadricCase c;
     c.name = name;
     c.make = [=] { return MakeSphere(r, zmin, zmax, thetamax); };
@@ -88,8 +89,8 @@ inline QuadricCase ParaboloidCase(std::string name, double rmax, double zmin, do
     return c;
 }
 
-inline QuadricCase TorusCase(std::string name, double R, double r, double phimin,
-                             double phimax, double thetamax) {
+inline QuadricCase TorusCase(std::string name, double R, double r, double phimin, double phimax,
+                             double thetamax) {
     QuadricCase c;
     c.name = name;
     c.make = [=] { return MakeTorus(R, r, phimin, phimax, thetamax); };
@@ -111,8 +112,8 @@ inline QuadricCase TorusCase(std::string name, double R, double r, double phimin
 inline std::vector<QuadricCase> AllQuadricCases() {
     auto hyperboloid = [](std::string name, V3d p1, V3d p2, double thetamax, double sign) {
         return LineCase(
-            name, [=] { return MakeHyperboloid(Imath::V3f(p1), Imath::V3f(p2), thetamax); }, p1,
-            p2, thetamax, sign);
+            name, [=] { return MakeHyperboloid(Imath::V3f(p1), Imath::V3f(p2), thetamax); }, p1, p2,
+            thetamax, sign);
     };
     auto cylinder = [](std::string name, double r, double zmin, double zmax, double thetamax,
                        double sign) {
@@ -122,8 +123,8 @@ inline std::vector<QuadricCase> AllQuadricCases() {
     };
     auto cone = [](std::string name, double height, double r, double thetamax) {
         QuadricCase c = LineCase(
-            name, [=] { return MakeCone(height, r, thetamax); }, V3d(r, 0, 0),
-            V3d(0, 0, height), thetamax, 1);
+            name, [=] { return MakeCone(height, r, thetamax); }, V3d(r, 0, 0), V3d(0, 0, height),
+            thetamax, 1);
         return c;
     };
     auto disk = [](std::string name, double height, double r, double thetamax) {
@@ -159,9 +160,10 @@ inline std::vector<QuadricCase> AllQuadricCases() {
         TorusCase("TorusPartial", 2, 0.5, -90, 180, 270),
         TorusCase("TorusSlice", 1, 0.25, 45, 300, 90),
     };
-    QuadricCase annulus = hyperboloid("HyperboloidFlat", V3d(0.5, 0.2, 0), V3d(0.3, -0.4, 0),
-                                      180, 1);
+    QuadricCase annulus =
+        hyperboloid("HyperboloidFlat", V3d(0.5, 0.2, 0), V3d(0.3, -0.4, 0), 180, 1);
     annulus.uniqueUV = false;  // the segment passes some distances from the axis twice
+    annulus.orientation = 0;   // ... towards the axis (Ng = +z) and then away from it (−z)
     annulus.clipU = annulus.clipV0 = annulus.clipV1 = false;
     cases.push_back(annulus);
     return cases;

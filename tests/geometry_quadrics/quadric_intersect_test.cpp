@@ -109,8 +109,9 @@ TEST_P(QuadricIntersect, RandomRaysFindTheNearestHitOnTheSurface) {
         EXPECT_LE(hit.v, 1);
         QuadricHit earlier, later;
         EXPECT_FALSE(shape->Intersect(org, dir, 0, hit.t * (1 - 1e-5f), &earlier));
-        if (shape->Intersect(org, dir, hit.t * (1 + 1e-5f), kInfinity, &later))
+        if (shape->Intersect(org, dir, hit.t * (1 + 1e-5f), kInfinity, &later)) {
             EXPECT_GT(later.t, hit.t);
+        }
     }
     EXPECT_GT(hits, 100);
 }
@@ -134,8 +135,8 @@ TEST(QuadricFarRays, SphereHitsAreExactToFloatPrecision) {
     struct Setup {
         float radius, distance, speed;
     };
-    for (const Setup s : {Setup{100, 440, 1}, Setup{1, 1000, 1}, Setup{1, 1000, 1e-3f},
-                          Setup{1, 1000, 1e3f}}) {
+    for (const Setup s :
+         {Setup{100, 440, 1}, Setup{1, 1000, 1}, Setup{1, 1000, 1e-3f}, Setup{1, 1000, 1e3f}}) {
         const auto sphere = MakeSphere(s.radius, -s.radius, s.radius, 360);
         std::mt19937 random(1);
         std::uniform_real_distribution<float> inside(0.05f, 0.95f);
@@ -157,8 +158,8 @@ TEST(QuadricFarRays, EveryShapeHitsAccuratelyFrom1000Units) {
     // outer half of a torus), hit from 1e3 units: the error allowed is a few float roundings
     // of the ray origin and direction (1e3 · 6e-8), far below a float solver's ~1e-2.
     const std::vector<QuadricCase> cases = AllQuadricCases();
-    for (const char* name : {"SphereFull", "CylinderFull", "ConeFull", "DiskFull",
-                             "ParaboloidFull", "TorusFull", "TorusPartial"}) {
+    for (const char* name : {"SphereFull", "CylinderFull", "ConeFull", "DiskFull", "ParaboloidFull",
+                             "TorusFull", "TorusPartial"}) {
         const QuadricCase& c =
             *std::find_if(cases.begin(), cases.end(), [&](auto& x) { return x.name == name; });
         const auto shape = c.make();
@@ -204,13 +205,14 @@ TEST(QuadricDegenerate, NeverHitAndEvaluateToFiniteValues) {
     shapes.push_back(MakeTorus(1, 0, 0, 360, 360));
     shapes.push_back(MakeTorus(1, 0.5f, 90, 90, 360));
     shapes.push_back(MakeTorus(1, 0.5f, 0, 360, 0));
+    shapes.push_back(MakeTorus(1, 0.5f, 1e20f, 1e20f, 360));  // huge equal angles
     shapes.push_back(MakeTorus(1, 0.5f, 0, 360, std::numeric_limits<float>::infinity()));
     std::mt19937 random(4);
     std::normal_distribution<float> gauss;
     for (size_t i = 0; i < shapes.size(); ++i) {
         const Box3f box = shapes[i]->Bounds();
-        EXPECT_TRUE(std::isfinite(box.min.x + box.min.y + box.min.z + box.max.x + box.max.y +
-                                  box.max.z))
+        EXPECT_TRUE(
+            std::isfinite(box.min.x + box.min.y + box.min.z + box.max.x + box.max.y + box.max.z))
             << i;
         for (int k = 0; k < 500; ++k) {
             const V3f org = V3f(gauss(random), gauss(random), gauss(random)) * 3.0f;
@@ -261,14 +263,54 @@ TEST(QuadricRays, TorusIsHitFourTimesAlongADiameter) {
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(ts[i], expected[i], 1e-5) << i;
 }
 
+TEST(QuadricRays, HyperboloidThroughTheAxisIsADoubleCone) {
+    // The line (1, 0, −1) → (−1, 0, 1) sweeps x² + y² = z²; above z = 0 the profile lies at
+    // x < 0, so the point (0.5, 0, 0.5) is reached by turning it half a turn.
+    const auto cone = MakeHyperboloid(V3f(1, 0, -1), V3f(-1, 0, 1), 360);
+    QuadricHit hit;
+    ASSERT_TRUE(cone->Intersect(V3f(5, 0, 0.5f), V3f(-1, 0, 0), 0, kInfinity, &hit));
+    EXPECT_NEAR(hit.t, 4.5, 1e-6);
+    EXPECT_NEAR(hit.u, 0.5, 1e-6);
+    EXPECT_NEAR(hit.v, 0.75, 1e-6);
+    const SurfaceGeometry g = cone->Evaluate(hit.u, hit.v);
+    EXPECT_NEAR((D(g.P) - V3d(0.5, 0, 0.5)).length(), 0, 1e-6);
+    EXPECT_NEAR((D(g.Ng) - V3d(1, 0, -1) / std::sqrt(2.0)).length(), 0, 1e-6);
+    // At the apex Ng is the limit from above (v > 0.5), which points down and out.
+    const SurfaceGeometry apex = cone->Evaluate(0, 0.5f);
+    EXPECT_NEAR((D(apex.Ng) - V3d(-1, 0, -1) / std::sqrt(2.0)).length(), 0, 1e-6);
+}
+
+TEST(QuadricRays, FlatHyperboloidFacesDownWhenItsLineRunsOutwards) {
+    // RISpec's example "Hyperboloid 0 0 0 .5 0 0 270": a disk whose v runs from the centre
+    // out, the opposite of Disk, so its Ng is −z.
+    const auto flat = MakeHyperboloid(V3f(0, 0, 0), V3f(0.5f, 0, 0), 270);
+    QuadricHit hit;
+    ASSERT_TRUE(flat->Intersect(V3f(0, 0.25f, 1), V3f(0, 0, -1), 0, kInfinity, &hit));
+    EXPECT_NEAR(hit.t, 1, 1e-6);
+    EXPECT_NEAR(hit.u, 90.0 / 270, 1e-6);
+    EXPECT_NEAR(hit.v, 0.5, 1e-6);
+    EXPECT_NEAR(flat->Evaluate(hit.u, hit.v).Ng.z, -1, 1e-6);
+    EXPECT_FALSE(flat->Intersect(V3f(0.1f, -0.25f, 1), V3f(0, 0, -1), 0, kInfinity, &hit));
+}
+
 TEST(QuadricRays, SpindleTorusAndOverSweptSphere) {
     // Spindle torus (r > R): its inner lemon is the tube's far side swept around.
     const auto spindle = MakeTorus(0.5f, 1, 0, 360, 360);
     QuadricHit hit;
     ASSERT_TRUE(spindle->Intersect(V3f(0, 0, 0), V3f(1, 0, 0), 0, kInfinity, &hit));
-    EXPECT_NEAR(hit.t, 1.5, 1e-6);
+    EXPECT_NEAR(hit.t, 0.5, 1e-6);  // the lemon's equator, radius r − R
+    EXPECT_NEAR(hit.u, 0.5, 1e-6);  // reached by the half plane θ = 180°
+    ASSERT_TRUE(spindle->Intersect(V3f(0, 0, 0), V3f(1, 0, 0), 0.6f, kInfinity, &hit));
+    EXPECT_NEAR(hit.t, 1.5, 1e-6);  // the apple's equator, R + r
+    EXPECT_NEAR(hit.u, 0, 1e-6);
     ASSERT_TRUE(spindle->Intersect(V3f(0, 0, -5), V3f(0, 0, 1), 0, kInfinity, &hit));
     EXPECT_NEAR(hit.t, 5 - std::sqrt(0.75), 1e-5);  // the lemon's tip at z = −√(r² − R²)
+    // A torus with no hole radius is a sphere swept twice over.
+    const auto ball = MakeTorus(0, 1, 0, 360, 360);
+    ASSERT_TRUE(ball->Intersect(V3f(0.5f, 0, 5), V3f(0, 0, -1), 0, kInfinity, &hit));
+    EXPECT_NEAR(hit.t, 5 - std::sqrt(0.75), 1e-6);
+    EXPECT_NEAR((D(ball->Evaluate(hit.u, hit.v).P) - V3d(0.5, 0, std::sqrt(0.75))).length(), 0,
+                1e-6);
     // thetamax beyond 360 sweeps twice: the smallest u is reported.
     const auto twice = MakeSphere(1, -1, 1, 720);
     ASSERT_TRUE(twice->Intersect(V3f(0, 5, 0), V3f(0, -1, 0), 0, kInfinity, &hit));

@@ -64,6 +64,15 @@ TEST(FilmSpec, CropWindowRoundsAsRiSpec) {
     EXPECT_EQ(a.WindowWidth(), 34);
 }
 
+TEST(FilmSpec, DegenerateCropWindowKeepsOnePixel) {
+    FilmSpec backwards = FilmSpec::FromCropWindow(10, 10, 0.8f, 0.2f, 0.5f, 0.5f, 0, -1, 5);
+    EXPECT_EQ(backwards.WindowWidth(), 1);
+    EXPECT_EQ(backwards.WindowHeight(), 1);
+    EXPECT_EQ(backwards.SamplesPerPixel(), 1);
+    Film film(backwards, PixelFilter());
+    EXPECT_EQ(film.Resolve().pixels.size(), 5u);
+}
+
 TEST(FilmSpec, DepthChannelOnlyWhenThereIsOne) {
     EXPECT_EQ(SmallSpec(4, 4, 1, 1, 5).depthChannel, kChannelZ);
     EXPECT_EQ(SmallSpec(4, 4, 1, 1, 4).depthChannel, -1);

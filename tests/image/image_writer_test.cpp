@@ -347,12 +347,14 @@ TEST(WriteDisplay, CropWindowKeepsItsPlaceInTheFrame) {
     image.yorigin = 20;
     image.fullWidth = 64;
     image.fullHeight = 48;
-    for (const char* name : {"crop.tif", "crop.exr"}) {
+    for (const char* name : {"crop.tif", "crop.exr", "crop.png"}) {
         std::string file = dir.File(name);
         ASSERT_TRUE(WriteDisplay(Display(file, "file", "rgb"), image, kChannelNames, Exposure{},
                                  Quantization{}, kFloat, diagnostics.Get()));
         ReadBack back = Read(file);
         EXPECT_EQ(back.spec.width, 5) << name;
+        EXPECT_EQ(back.spec.height, 3) << name;
+        if (std::string(name) == "crop.png") continue;  // PNG has no data window
         EXPECT_EQ(back.spec.x, 10) << name;
         EXPECT_EQ(back.spec.y, 20) << name;
     }
@@ -373,6 +375,7 @@ TEST(WriteDisplay, FailedWriteNamesTheFileAndLeavesNothing) {
     EXPECT_NE(text.find("scene.rib:3: error: cannot write image \"" + missing + "\""),
               std::string::npos)
         << text;
+    EXPECT_NE(text.find("does not exist"), std::string::npos) << text;
     // The rename onto an existing folder fails after the data was written: the temporary goes.
     std::string folder = dir.File("taken");
     fs::create_directory(folder);
@@ -381,6 +384,8 @@ TEST(WriteDisplay, FailedWriteNamesTheFileAndLeavesNothing) {
     EXPECT_EQ(diagnostics.Get().ErrorCount(), 2);
     EXPECT_EQ(dir.Entries(), std::vector<std::string>{"taken"});
     EXPECT_TRUE(fs::is_empty(folder));
+    EXPECT_EQ(diagnostics.Text().find(".tmp"), std::string::npos)  // only the name the user gave
+        << diagnostics.Text();
 }
 
 TEST(WriteDisplay, ChannelNamesMustMatchTheImage) {

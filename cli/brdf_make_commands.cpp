@@ -1,0 +1,178 @@
+// `gonio brdf synth | merge | opt | iopt`: photon maps made and combined, and turned into
+// optimised splat grids (thesis GPBRDFOpt, GPIBRDFOpt).
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "analytic_brdf.h"
+#include "baked_table.h"
+#include "brdf_cli.h"
+#include "brdf_grid.h"
+#include "grd_file.h"
+#include "photon_map.h"
+#include "synth.h"
+
+namespace gonio::brdfcli {
+
+namespace {
+
+void AddSynth(CLI::App& brdf, int* exitCode) {
+    auto* cmd = brdf.add_subcommand(
+        "synth", "draw a synthetic photon map from lambert:ALBEDO or phong:KD,KS,EXPONENT");
+    auto model = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    auto options = std::make_shared<SynthOptions>();
+    auto brdfSampling = std::make_shared<bool>(false);
+    cmd->add_option("MODEL", *model, "lambert:ALBEDO or phong:KD,KS,EXPONENT")->required();
+    cmd->add_option("-n,--paths", options->paths, "photon paths to trace")->required();
+    cmd->add_option("--seed", options->seed, "random seed")->capture_default_str();
+    cmd->add_flag("--isotropic", options->isotropic, "phi_in = 0, theta_in uniform (for iopt)");
+    cmd->add_flag("--stratified", options->stratified,
+                  "low-discrepancy points instead of independent random numbers");
+    cmd->add_option("--components", options->ncomps, "colour values per photon")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    cmd->add_flag("--brdf-sampling", *brdfSampling,
+                  "exits from the BRDF's importance sampling alone, as a tracer draws them");
+    cmd->add_option("-o,--output", *out, "output photon map (.pm)")->required();
+    cmd->callback([=] {
+        *exitCode = RunGuarded("synth", [&] {
+            options->defensive = !*brdfSampling;
+            const AnalyticBrdf analytic = AnalyticBrdf::Parse(*model);
+            if (options->paths < 1) throw UsageError("-n must be at least 1");
+            const PhotonMapHeader header = WriteSyntheticPhotonMap(analytic, *options, *out);
+            std::printf("%s: %llu photons of %llu paths from %s\n", out->c_str(),
+                        static_cast<unsigned long long>(header.count),
+                        static_cast<unsigned long long>(header.paths), model->c_str());
+        });
+    });
+}
+
+void AddMerge(CLI::App& brdf, int* exitCode) {
+    auto* cmd = brdf.add_subcommand("merge", "combine photon maps of several runs into one");
+    auto inputs = std::make_shared<std::vector<std::string>>();
+    auto out = std::make_shared<std::string>();
+    cmd->add_option("INPUTS", *inputs, "photon maps (.pm)")->required()->expected(1, -1);
+    cmd->add_option("-o,--output", *out, "output photon map (.pm)")->required();
+    cmd->callback([=] {
+        *exitCode = RunGuarded("merge", [&] {
+            PhotonMapHeader total;
+            for (const std::string& path : *inputs) {
+                const PhotonMapHeader header = ReadPhotonMapHeader(path);
+                total.count += header.count;
+                total.paths += header.paths;
+            }
+            std::unique_ptr<PhotonMapWriter> writer;
+            int ncomps = 0;
+            for (const std::string& path : *inputs) {
+                PhotonMapReader reader(path);
+                std::vector<float> rows;
+                bool more = true;
+                while (more) {
+                    rows.clear();
+                    more = reader.ReadBatch(1 << 18, rows);
+                    if (rows.empty()) continue;
+                    if (!writer) {
+                        ncomps = reader.NumComponents();
+                        writer = std::make_unique<PhotonMapWriter>(*out, total, ncomps);
+                    } else if (reader.NumComponents() != ncomps) {
+                        throw PhotonMapError(path + ": " + std::to_string(reader.NumComponents()) +
+                                             " colour values per photon, the maps before have " +
+                                             std::to_string(ncomps));
+                    }
+                    const int stride = kFirstColour + ncomps;
+                    for (std::size_t i = 0; i < rows.size(); i += stride) writer->Append(&rows[i]);
+                }
+            }
+            if (!writer) throw PhotonMapError("the photon maps hold no photons");
+            writer->Close();
+            std::printf("%s: %llu photons of %llu paths from %zu maps\n", out->c_str(),
+                        static_cast<unsigned long long>(total.count),
+                        static_cast<unsigned long long>(total.paths), inputs->size());
+        });
+    });
+}
+
+struct OptArgs {
+    int rings = 0, rects = 0;
+    std::string spread, input, output, norm = "l2", horizon = "reflect";
+    double energyMin = 0.0;
+    int bake = 0;
+};
+
+void RunOpt(const OptArgs& args, bool isotropic) {
+    const auto start = std::chrono::steady_clock::now();
+    SplatParams params;
+    params.radius = ParseSpread(args.spread);
+    params.energyMin = args.energyMin;
+    params.norm = ParseNorm(args.norm);
+    params.horizon = ParseHorizon(args.horizon);
+    params.isotropic = isotropic;
+    if (args.rings < 1 || args.rects < 1) throw UsageError("RINGS and RECTS must be at least 1");
+    std::fprintf(stderr, "reading %s\n", args.input.c_str());
+    const PhotonMap map = ReadPhotonMap(args.input);
+    auto splats = std::make_shared<const SplatSet>(map, params);
+    ProgressLine progress(isotropic ? "iopt: splat lists" : "opt: splat lists");
+    std::unique_ptr<Brdf> grid;
+    const CellLists* lists;
+    if (isotropic) {
+        auto iso = std::make_unique<BrdfIsoGrid>(splats, args.rings, args.rects, std::ref(progress));
+        lists = &iso->Lists();
+        grid = std::move(iso);
+    } else {
+        auto full = std::make_unique<BrdfGrid>(splats, args.rings, args.rects, std::ref(progress));
+        lists = &full->Lists();
+        grid = std::move(full);
+    }
+    progress.Finish();
+    std::unique_ptr<BakedTable> baked;
+    if (args.bake > 0) {
+        ProgressLine bakeProgress("baking the table");
+        baked = std::make_unique<BakedTable>(*grid, args.bake, std::ref(bakeProgress));
+        bakeProgress.Finish();
+    }
+    WriteGrd(args.output, *splats, args.rings, args.rects, *lists, baked.get());
+    const GridStats stats = ComputeGridStats(*lists, splats->Size());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %zu splats (%s, R = %.4f rad, %s), %zu cells, %.1f splats per cell "
+                "(ratio %.4f), %.1f MB, %.2f s\n",
+                args.output.c_str(), splats->Size(), isotropic ? "isotropic" : "anisotropic",
+                params.radius, NormName(params.norm), stats.cells, stats.averageSplats,
+                stats.ratio, (grid->MemoryBytes() + (baked ? baked->MemoryBytes() : 0)) / 1e6,
+                seconds);
+}
+
+void AddOpt(CLI::App& brdf, int* exitCode, bool isotropic) {
+    const char* name = isotropic ? "iopt" : "opt";
+    auto* cmd = brdf.add_subcommand(
+        name, isotropic ? "optimise an isotropic photon map into a .grd (GPIBRDFOpt)"
+                        : "optimise a photon map into a 4D splat grid .grd (GPBRDFOpt)");
+    auto args = std::make_shared<OptArgs>();
+    cmd->add_option("RINGS", args->rings, "bands per hemisphere (θ_in ranges for iopt)")
+        ->required();
+    cmd->add_option("RECTS", args->rects, "cells in the widest band")->required();
+    cmd->add_option("SPREAD", args->spread, "splat radius: radians, or degrees as 17deg")
+        ->required();
+    cmd->add_option("ENERGY_MIN", args->energyMin, "photons with less energy are skipped")
+        ->required();
+    cmd->add_option("INPUT", args->input, "photon map (.pm)")->required();
+    cmd->add_option("OUTPUT", args->output, "output grid (.grd)")->required();
+    AddNormOption(cmd, &args->norm, &args->horizon);
+    cmd->add_option("--bake", args->bake, "also store a baked table with RES θ nodes")
+        ->check(CLI::Range(0, 256));
+    cmd->callback([=] {
+        *exitCode = RunGuarded(name, [&] { RunOpt(*args, isotropic); });
+    });
+}
+
+}  // namespace
+
+void AddMakeCommands(CLI::App& brdf, int* exitCode) {
+    AddSynth(brdf, exitCode);
+    AddMerge(brdf, exitCode);
+    AddOpt(brdf, exitCode, false);
+    AddOpt(brdf, exitCode, true);
+}
+
+}  // namespace gonio::brdfcli
