@@ -89,6 +89,25 @@ void AttachGridNormals(const PrimVar& n, const GridAxis& u, const GridAxis& v, T
     }
 }
 
+// A curved surface shades smoothly although it is drawn as flat triangles: each grid vertex
+// gets dPdu × dPdv estimated by differences to its grid neighbours (one-sided at the edges),
+// oriented like the triangles. Where the surface degenerates (a pole), the estimate is zero and
+// the renderer falls back to the triangle's own normal.
+void AttachSmoothNormals(int nu, int nv, TriangleMesh* mesh) {
+    const std::vector<V3f>& p = mesh->positions;
+    mesh->normals.resize(p.size());
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            const int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, nu - 1);
+            const int j0 = std::max(j - 1, 0), j1 = std::min(j + 1, nv - 1);
+            const V3f du = p[j * nu + i1] - p[j * nu + i0];
+            const V3f dv = p[j1 * nu + i] - p[j0 * nu + i];
+            const V3f n = du.cross(dv);
+            const float len = n.length();
+            mesh->normals[j * nu + i] = len > 0 ? n / len : V3f(0, 0, 0);
+        }
+}
+
 }  // namespace
 
 TriangleMesh TessellateTensorGrid(const GridAxis& u, const GridAxis& v,
@@ -125,6 +144,7 @@ TriangleMesh TessellateTensorGrid(const GridAxis& u, const GridAxis& v,
         else
             mesh.vars.push_back({WithValues(var, EvaluateOnGrid(var, u, v)), MeshRate::PerVertex});
     }
+    if (mesh.normals.empty() && mesh.cornerNormals.empty()) AttachSmoothNormals(nu, nv, &mesh);
     return mesh;
 }
 

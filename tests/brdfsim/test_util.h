@@ -71,4 +71,45 @@ inline ErrorStats CompareOnDenseSet(const Brdf& brdf, const AnalyticBrdf& refere
     return stats;
 }
 
+// Peak and full width at half maximum of a sampled curve; the half-maximum crossings are
+// interpolated linearly between samples.
+struct Lobe {
+    double peak = 0, peakAt = 0, fwhm = 0;
+};
+
+inline Lobe MeasureLobe(const std::vector<double>& x, const std::vector<double>& y) {
+    Lobe lobe;
+    std::size_t top = 0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        if (y[i] > y[top]) top = i;
+    }
+    lobe.peak = y[top];
+    lobe.peakAt = x[top];
+    const double half = lobe.peak / 2;
+    std::size_t lo = top, hi = top;
+    while (lo > 0 && y[lo - 1] >= half) --lo;
+    while (hi + 1 < y.size() && y[hi + 1] >= half) ++hi;
+    const double left = lo > 0 ? x[lo - 1] + (half - y[lo - 1]) / (y[lo] - y[lo - 1]) *
+                                                 (x[lo] - x[lo - 1])
+                               : x[lo];
+    const double right = hi + 1 < y.size() ? x[hi] + (y[hi] - half) / (y[hi] - y[hi + 1]) *
+                                                         (x[hi + 1] - x[hi])
+                                           : x[hi];
+    lobe.fwhm = right - left;
+    return lobe;
+}
+
+// A cut through the plane of incidence of an isotropic BRDF lit from φ = π: x < 0 lies towards
+// the light, the mirror direction is at x = θ_in.
+inline Lobe PlaneOfIncidenceLobe(const Brdf& brdf, double thetaInDeg) {
+    std::vector<double> xs, ys;
+    std::vector<float> f(brdf.NumComponents());
+    for (double x = -89; x <= 89; x += 0.25) {
+        brdf.EvalAngles(thetaInDeg * kDeg, kPi, std::abs(x) * kDeg, x < 0 ? kPi : 0, f.data());
+        xs.push_back(x);
+        ys.push_back(f[0]);
+    }
+    return MeasureLobe(xs, ys);
+}
+
 }  // namespace gonio::test

@@ -1,0 +1,261 @@
+#include "photon/photon_tracer.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "photon/scene_bounds.h"
+#include "render/progress.h"
+#include "render/random.h"
+
+namespace gonio {
+namespace {
+
+using Imath::V3f;
+
+constexpr float kPi = 3.14159265358979f;
+constexpr uint64_t kBatch = 4096;
+// A periodic ray that crosses this many tile walls without hitting or leaving the slab of the
+// geometry runs (almost) horizontally through it: counted with the bounce-limit photons.
+constexpr int kMaxWraps = 10000;
+
+class PathRandom {
+  public:
+    PathRandom(uint64_t seed, uint64_t path) : state_(HashCombine(Mix64(seed), path)) {}
+    float Next() { return ToUnitFloat(Mix64(state_ += 0x9e3779b97f4a7c15ull)); }
+
+  private:
+    uint64_t state_;
+};
+
+enum class Segment { Hit, Escaped, Stuck };
+
+// Everything a path needs that does not change during the run.
+struct TraceContext {
+    const RayScene& scene;
+    const MicroBrdfTable& brdfs;
+    const PhotonTraceSettings& settings;
+    int ncomps;
+    float half;             // half the tile side
+    float cosMin, cosMax;   // of θ_in: cos θmax ≤ cos θ′ ≤ cos θmin
+    float pIn;              // pdf of ω′ per steradian (of the rotation-symmetric law if isotropic)
+    float launch;           // beam origins this far from the sampling area lie outside the bounds
+    float zMin, zMax;       // vertical extent of the geometry
+    float offset;           // ray origin offset off a surface
+};
+
+// Intersects org + t·dir; for a periodic tile the ray runs in the column over the tile and
+// re-enters on the far side when it crosses a wall (org is moved to the last entry point), and
+// it has escaped once it leaves the slab [zMin, zMax] of the geometry.
+Segment TraceSegment(const TraceContext& c, V3f& org, const V3f& dir, RayHit* hit) {
+    if (!c.settings.periodic) {
+        return c.scene.Intersect(org, dir, 0, std::numeric_limits<float>::infinity(), hit)
+                   ? Segment::Hit
+                   : Segment::Escaped;
+    }
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int wraps = 0; wraps < kMaxWraps; ++wraps) {
+        const float tx = dir.x > 0 ? (c.half - org.x) / dir.x
+                         : dir.x < 0 ? (-c.half - org.x) / dir.x
+                                     : inf;
+        const float ty = dir.y > 0 ? (c.half - org.y) / dir.y
+                         : dir.y < 0 ? (-c.half - org.y) / dir.y
+                                     : inf;
+        const float tz = dir.z > 0 ? (c.zMax - org.z) / dir.z
+                         : dir.z < 0 ? (c.zMin - org.z) / dir.z
+                                     : inf;
+        const float tWall = std::max(0.0f, std::min(tx, ty));
+        if (c.scene.Intersect(org, dir, 0, std::min(tWall, std::max(tz, 0.0f)), hit))
+            return Segment::Hit;
+        if (tz <= tWall) return Segment::Escaped;
+        org += tWall * dir;
+        if (tx <= ty)
+            org.x = dir.x > 0 ? -c.half : c.half;
+        else
+            org.y = dir.y > 0 ? -c.half : c.half;
+    }
+    return Segment::Stuck;
+}
+
+// The start of the beam through x: outside the geometry on the light's side (for a periodic
+// tile: above the slab, moved back into the column).
+V3f BeamOrigin(const TraceContext& c, const V3f& x, const V3f& wIn) {
+    if (!c.settings.periodic) return x + c.launch * wIn;
+    const double s = (double(c.zMax) - x.z) / wIn.z + 1e-4;
+    const double w = 2.0 * c.half;
+    auto wrap = [&](double v) { return static_cast<float>(v - w * std::floor(v / w + 0.5)); };
+    return V3f(wrap(x.x + s * wIn.x), wrap(x.y + s * wIn.y), static_cast<float>(x.z + s * wIn.z));
+}
+
+struct Batch {
+    std::vector<float> rows;
+    PhotonStats stats;
+};
+
+class PathTracer {
+  public:
+    PathTracer(const TraceContext& c, Batch& out) : c_(c), out_(out), beta_(c.ncomps) {}
+
+    void Trace(uint64_t path) {
+        PathRandom random(c_.settings.seed, path);
+        // ω′: cos θ′ uniform on [cos θmax, cos θmin], φ′ uniform or 0 (DESIGN.md)
+        const float cosIn = c_.cosMax + (c_.cosMin - c_.cosMax) * (1 - random.Next());
+        const float phiIn = c_.settings.isotropic ? 0.0f : 2 * kPi * random.Next();
+        const float sinIn = std::sqrt(std::max(0.0f, 1 - cosIn * cosIn));
+        const V3f wIn(sinIn * std::cos(phiIn), sinIn * std::sin(phiIn), cosIn);
+        const float w = 2 * c_.half;
+        const V3f x((random.Next() - 0.5f) * w, (random.Next() - 0.5f) * w, 0);
+
+        V3f org = BeamOrigin(c_, x, wIn), dir = -wIn;
+        RayHit hit;
+        if (TraceSegment(c_, org, dir, &hit) != Segment::Hit) {
+            ++out_.stats.missed;
+            return;
+        }
+        std::fill(beta_.begin(), beta_.end(), 1.0f);
+        for (int depth = 1;; ++depth) {
+            ++out_.stats.bounces;
+            const SurfacePoint sp = c_.scene.Evaluate(org, dir, hit);
+            const V3f wo = Scatter(sp, -dir, random);
+            if (wo == V3f(0)) {
+                ++out_.stats.absorbed;
+                return;
+            }
+            org = sp.P + c_.offset * FacingNormal(sp.Ng, wo);
+            dir = wo;
+            const Segment next = TraceSegment(c_, org, dir, &hit);
+            if (next == Segment::Escaped) return Escape(acosf(std::min(1.0f, cosIn)), phiIn, wo);
+            if (next == Segment::Stuck || depth >= c_.settings.maxDepth) {
+                ++out_.stats.bounceLimit;
+                return;
+            }
+        }
+    }
+
+  private:
+    static V3f FacingNormal(const V3f& n, const V3f& w) { return n.dot(w) < 0 ? -n : n; }
+
+    // Samples the micro BRDF at sp for light arriving from wi and multiplies β by f cos/pdf;
+    // returns 0 when the photon is absorbed (sampled into the surface, or β vanished).
+    V3f Scatter(const SurfacePoint& sp, const V3f& wi, PathRandom& random) {
+        const MicroBrdf& brdf = c_.brdfs.at(sp.shape);
+        // Surfaces reflect on the side the photon arrives from (thin blades are two-sided).
+        const V3f ng = FacingNormal(sp.Ng, wi);
+        const V3f n = FacingNormal(sp.N, ng);
+        const float u0 = random.Next(), u1 = random.Next(), u2 = random.Next();
+        const V3f wo = brdf.Sample(n, wi, u0, u1, u2);
+        const float cosOut = n.dot(wo);
+        if (wo.dot(ng) <= 0 || cosOut <= 0) return V3f(0);
+        const float pdf = brdf.Pdf(n, wi, wo);
+        if (!(pdf > 0)) return V3f(0);
+        const float specular = brdf.Specular(n, wi, wo);
+        bool alive = false;
+        for (int k = 0; k < c_.ncomps; ++k) {
+            const float cs = k < int(sp.Cs.size()) ? sp.Cs[k] : 1.0f;
+            beta_[k] *= (brdf.kd * cs / kPi + specular) * cosOut / pdf;
+            alive |= beta_[k] > 0;
+        }
+        return alive ? wo : V3f(0);
+    }
+
+    void Escape(float thetaIn, float phiIn, const V3f& wo) {
+        if (wo.z <= 0) {
+            ++out_.stats.escapedDown;
+            return;
+        }
+        ++out_.stats.escapedUp;
+        float phiOut = std::atan2(wo.y, wo.x);
+        if (phiOut < 0) phiOut += 2 * kPi;
+        out_.rows.insert(out_.rows.end(), {thetaIn, phiIn, std::acos(std::min(1.0f, wo.z)),
+                                           phiOut, c_.pIn});
+        out_.rows.insert(out_.rows.end(), beta_.begin(), beta_.end());
+        for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyUp[k] += beta_[k];
+    }
+
+    const TraceContext& c_;
+    Batch& out_;
+    std::vector<float> beta_;
+};
+
+void Accumulate(const PhotonStats& from, PhotonStats* to) {
+    to->escapedUp += from.escapedUp;
+    to->escapedDown += from.escapedDown;
+    to->missed += from.missed;
+    to->bounceLimit += from.bounceLimit;
+    to->absorbed += from.absorbed;
+    to->bounces += from.bounces;
+    for (size_t k = 0; k < to->energyUp.size(); ++k) to->energyUp[k] += from.energyUp[k];
+}
+
+}  // namespace
+
+MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics) {
+    MicroBrdfTable table;
+    for (const SceneShape& shape : frame.shapes)
+        table[&shape] = MicroBrdfFromAttributes(*shape.attributes, diagnostics);
+    for (const ObjectInstanceUse& use : frame.instances) {
+        for (const SceneShape& shape : use.definition->shapes)
+            table[&shape] = MicroBrdfFromAttributes(*shape.attributes, diagnostics);
+    }
+    return table;
+}
+
+PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
+                               const MicroBrdfTable& brdfs, const PhotonTraceSettings& settings) {
+    const auto start = std::chrono::steady_clock::now();
+    const Imath::Box3f bounds = WorldBounds(frame);
+    float reach = 0;
+    for (int i = 0; i < 8; ++i) {
+        const V3f corner((i & 1) ? bounds.max.x : bounds.min.x,
+                         (i & 2) ? bounds.max.y : bounds.min.y,
+                         (i & 4) ? bounds.max.z : bounds.min.z);
+        reach = std::max(reach, corner.length());
+    }
+    TraceContext c{scene, brdfs, settings, frame.options.colorComponents};
+    c.half = settings.area / 2;
+    c.cosMin = std::cos(settings.thetaMin);
+    c.cosMax = std::max(0.0f, std::cos(settings.thetaMax));
+    // Isotropic maps record the pdf of the rotation-symmetric law (brdfsim divides by
+    // 2π sin θ′ p_in to get the density of θ′), so both cases store the same number.
+    c.pIn = 1 / (2 * kPi * (c.cosMin - c.cosMax));
+    c.launch = reach + settings.area + 1;
+    c.zMin = bounds.min.z;
+    c.zMax = bounds.max.z;
+    c.offset = 1e-5f * std::max(bounds.size().length(), 1e-3f);
+
+    const uint64_t numBatches = (settings.paths + kBatch - 1) / kBatch;
+    std::vector<Batch> batches(numBatches);
+    Progress progress("BRDFLight", settings.paths, settings.progress);
+    tbb::parallel_for(uint64_t(0), numBatches, [&](uint64_t b) {
+        Batch& batch = batches[b];
+        batch.stats.energyUp.assign(c.ncomps, 0.0);
+        PathTracer tracer(c, batch);
+        const uint64_t first = b * kBatch, last = std::min(settings.paths, first + kBatch);
+        for (uint64_t path = first; path < last; ++path) tracer.Trace(path);
+        progress.Advance(last - first);
+    });
+    progress.Done();
+
+    PhotonTraceResult result;
+    result.ncomps = c.ncomps;
+    result.stats.paths = settings.paths;
+    result.stats.energyUp.assign(c.ncomps, 0.0);
+    size_t values = 0;
+    for (const Batch& batch : batches) values += batch.rows.size();
+    result.rows.reserve(values);
+    for (Batch& batch : batches) {
+        result.rows.insert(result.rows.end(), batch.rows.begin(), batch.rows.end());
+        Accumulate(batch.stats, &result.stats);
+        std::vector<float>().swap(batch.rows);
+    }
+    result.stats.threads = tbb::this_task_arena::max_concurrency();
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace gonio

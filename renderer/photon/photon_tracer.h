@@ -1,0 +1,59 @@
+#pragma once
+// The BRDFLight photon tracer (thesis §3.3 and Appendix C.5, radiometry of DESIGN.md): collimated
+// beams over the w×w sampling area at z=0 meet the micro geometry, scatter by its micro BRDF
+// until they escape, and every photon escaping upwards becomes one photon-map row
+//   θ_in φ_in θ_out φ_out p_in β_1..β_ncomps
+// with β = Π f_m cos θ_o / pdf over the bounces and p_in the pdf per steradian of ω′ (the
+// estimator of brdfsim divides by it). Paths run in parallel batches with counter-based random
+// numbers: the same rows, in the same order, whatever the thread count.
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "photon/micro_brdf.h"
+#include "render/ray_scene.h"
+#include "scene/frame.h"
+
+namespace gonio {
+
+struct PhotonTraceSettings {
+    uint64_t paths = 100000;
+    float area = 0.1f;
+    bool isotropic = false;
+    uint64_t seed = 0;
+    int maxDepth = 100;
+    bool periodic = false;
+    float thetaMin = 0, thetaMax = 1.5707964f;  // radians
+    bool progress = false;
+};
+
+struct PhotonStats {
+    uint64_t paths = 0;
+    uint64_t escapedUp = 0;    // written to the map
+    uint64_t escapedDown = 0;  // left below the horizon: dropped, counted
+    uint64_t missed = 0;       // the beam line met no geometry
+    uint64_t bounceLimit = 0;  // still inside after maxdepth bounces (or wrapping forever)
+    uint64_t absorbed = 0;     // scattered into the surface (the Phong lobe below the horizon)
+    uint64_t bounces = 0;      // surface hits over all paths
+    std::vector<double> energyUp;  // Σ β of the escaped photons, per component
+    double seconds = 0;
+    int threads = 1;
+
+    uint64_t Lost() const { return missed + bounceLimit; }
+};
+
+struct PhotonTraceResult {
+    int ncomps = 3;
+    std::vector<float> rows;  // 5 + ncomps floats per photon, in path order
+    PhotonStats stats;
+};
+
+// The micro BRDF of every shape of the frame (top level and object definitions).
+using MicroBrdfTable = std::unordered_map<const SceneShape*, MicroBrdf>;
+MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics);
+
+PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
+                               const MicroBrdfTable& brdfs, const PhotonTraceSettings& settings);
+
+}  // namespace gonio

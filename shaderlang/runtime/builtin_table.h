@@ -1,0 +1,37 @@
+#pragma once
+// The table of built-in functions (RISpec §15): one row per overload. The type checker resolves
+// calls against it and the code generator emits a call to the row's kernel. Adding a built-in is
+// one kernel and one row.
+//
+// Signature codes, one character per type: f float, s string, c color, p point, v vector,
+// n normal, m matrix, x void (return only). An upper-case code is an output argument the kernel
+// writes. A trailing "*" accepts any further arguments of any type (printf, format, texture
+// options); "[]" after a code is an array argument of any length ("f[]").
+
+#include <vector>
+
+#include "shaderlang/runtime/batch.h"
+
+namespace gonio::sl {
+
+enum BuiltinFlags : unsigned {
+    kBuiltinNone = 0,
+    kVaryingResult = 1u << 0,     // varying even when every argument is uniform (random, area)
+    kReadsGlobals = 1u << 1,      // reads shading globals (P, N, I, Cl, ...) through the context
+    kUsesLights = 1u << 2,        // ambient, diffuse, specular, phong: runs the light shaders
+    kHasSideEffects = 1u << 3,    // printf: never removed as dead code, never folded
+    kNeedsDerivatives = 1u << 4,  // Du, Dv, Deriv, area, calculatenormal
+};
+
+struct BuiltinInfo {
+    const char* name;
+    const char* returnType;  // one code
+    const char* arguments;   // codes, see above
+    BuiltinKernel kernel;
+    unsigned flags = kBuiltinNone;
+};
+
+// Every built-in overload, in a fixed order (indices are stable within a run).
+const std::vector<BuiltinInfo>& BuiltinTable();
+
+}  // namespace gonio::sl
