@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "photon/photon_frame.h"
 #include "render/frame_renderer.h"
 #include "rib/rib_parser.h"
 #include "scene/scene_builder.h"
@@ -55,6 +56,10 @@ int RunRender(const RenderOptions& options) {
             std::fprintf(stderr,
                          "gonio render: frame %d not rendered because of the errors above\n",
                          frame.number);
+            return;
+        }
+        if (IsBrdfLightFrame(frame)) {
+            outputFailed |= !TracePhotonFrame(frame, settings, diagnostics);
             return;
         }
         RenderStats stats;

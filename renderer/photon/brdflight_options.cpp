@@ -29,8 +29,8 @@ bool ReadBrdfLightOptions(const Frame& frame, Diagnostics& diagnostics, BrdfLigh
         const double v = p.numbers[0];
         auto require = [&](bool good, const char* expected) {
             if (good) return;
-            diagnostics.Error(p.loc, "Option \"BRDFLight\" \"" + name + "\": expected " +
-                                         expected + ", got " + std::to_string(v));
+            diagnostics.Error(p.loc, "Option \"BRDFLight\" \"" + name + "\": expected " + expected +
+                                         ", got " + std::to_string(v));
             ok = false;
         };
         if (name == "rays") {
@@ -68,9 +68,9 @@ bool ReadBrdfLightOptions(const Frame& frame, Diagnostics& diagnostics, BrdfLigh
         std::string stem = std::filesystem::path(frame.sceneFile).stem().string();
         if (stem.empty() || stem == "-") stem = "gonio";
         o.textureName = stem + ".pm";
-        diagnostics.NoteOnce("brdflight texturename", o.loc,
-                             "Option \"BRDFLight\" names no \"texturename\": writing " +
-                                 o.textureName);
+        diagnostics.NoteOnce(
+            "brdflight texturename", o.loc,
+            "Option \"BRDFLight\" names no \"texturename\": writing " + o.textureName);
     }
     *out = o;
     return ok;

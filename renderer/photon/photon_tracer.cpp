@@ -40,12 +40,12 @@ struct TraceContext {
     const MicroBrdfTable& brdfs;
     const PhotonTraceSettings& settings;
     int ncomps;
-    float half;             // half the tile side
-    float cosMin, cosMax;   // of θ_in: cos θmax ≤ cos θ′ ≤ cos θmin
-    float pIn;              // pdf of ω′ per steradian (of the rotation-symmetric law if isotropic)
-    float launch;           // beam origins this far from the sampling area lie outside the bounds
-    float zMin, zMax;       // vertical extent of the geometry
-    float offset;           // ray origin offset off a surface
+    float half;            // half the tile side
+    float cosMin, cosMax;  // of θ_in: cos θmax ≤ cos θ′ ≤ cos θmin
+    float pIn;         // pdf of ω′ per steradian (of the rotation-symmetric law if isotropic)
+    float launch;      // beam origins this far from the sampling area lie outside the bounds
+    float zMin, zMax;  // vertical extent of the geometry
+    float offset;      // ray origin offset off a surface
 };
 
 // Intersects org + t·dir; for a periodic tile the ray runs in the column over the tile and
@@ -59,13 +59,13 @@ Segment TraceSegment(const TraceContext& c, V3f& org, const V3f& dir, RayHit* hi
     }
     const float inf = std::numeric_limits<float>::infinity();
     for (int wraps = 0; wraps < kMaxWraps; ++wraps) {
-        const float tx = dir.x > 0 ? (c.half - org.x) / dir.x
+        const float tx = dir.x > 0   ? (c.half - org.x) / dir.x
                          : dir.x < 0 ? (-c.half - org.x) / dir.x
                                      : inf;
-        const float ty = dir.y > 0 ? (c.half - org.y) / dir.y
+        const float ty = dir.y > 0   ? (c.half - org.y) / dir.y
                          : dir.y < 0 ? (-c.half - org.y) / dir.y
                                      : inf;
-        const float tz = dir.z > 0 ? (c.zMax - org.z) / dir.z
+        const float tz = dir.z > 0   ? (c.zMax - org.z) / dir.z
                          : dir.z < 0 ? (c.zMin - org.z) / dir.z
                                      : inf;
         const float tWall = std::max(0.0f, std::min(tx, ty));
@@ -170,8 +170,8 @@ class PathTracer {
         ++out_.stats.escapedUp;
         float phiOut = std::atan2(wo.y, wo.x);
         if (phiOut < 0) phiOut += 2 * kPi;
-        out_.rows.insert(out_.rows.end(), {thetaIn, phiIn, std::acos(std::min(1.0f, wo.z)),
-                                           phiOut, c_.pIn});
+        out_.rows.insert(out_.rows.end(),
+                         {thetaIn, phiIn, std::acos(std::min(1.0f, wo.z)), phiOut, c_.pIn});
         out_.rows.insert(out_.rows.end(), beta_.begin(), beta_.end());
         for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyUp[k] += beta_[k];
     }

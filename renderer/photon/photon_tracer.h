@@ -30,12 +30,12 @@ struct PhotonTraceSettings {
 
 struct PhotonStats {
     uint64_t paths = 0;
-    uint64_t escapedUp = 0;    // written to the map
-    uint64_t escapedDown = 0;  // left below the horizon: dropped, counted
-    uint64_t missed = 0;       // the beam line met no geometry
-    uint64_t bounceLimit = 0;  // still inside after maxdepth bounces (or wrapping forever)
-    uint64_t absorbed = 0;     // scattered into the surface (the Phong lobe below the horizon)
-    uint64_t bounces = 0;      // surface hits over all paths
+    uint64_t escapedUp = 0;        // written to the map
+    uint64_t escapedDown = 0;      // left below the horizon: dropped, counted
+    uint64_t missed = 0;           // the beam line met no geometry
+    uint64_t bounceLimit = 0;      // still inside after maxdepth bounces (or wrapping forever)
+    uint64_t absorbed = 0;         // scattered into the surface (the Phong lobe below the horizon)
+    uint64_t bounces = 0;          // surface hits over all paths
     std::vector<double> energyUp;  // Σ β of the escaped photons, per component
     double seconds = 0;
     int threads = 1;

@@ -122,6 +122,11 @@ struct GeometryRecord {
     std::unique_ptr<QuadricGeometry> quadric;
     RTCGeometry geometry = nullptr;  // kept for rtcInterpolate on subdivision surfaces
     int instance = -1;               // index into Impl::instances for instance geometries
+    // Subdivision surfaces: the vertex-attribute slot of each vertex/varying variable (by
+    // index into *vars), -1 for the others.
+    std::vector<int> attributeSlot;
+    // Indices into *vars of the standard variables, -1 when absent.
+    int cs = -1, os = -1, st = -1, s = -1, t = -1;
 };
 
 struct SceneLevel {
@@ -154,7 +159,8 @@ struct RayScene::Impl {
     void Attach(SceneLevel& level, RTCGeometry geometry, std::unique_ptr<GeometryRecord> record);
     RTCGeometry MakeMesh(const TriangleMesh& mesh, const M44f& m);
     RTCGeometry MakeQuadric(GeometryRecord& record, const QuadricShape& shape);
-    RTCGeometry MakeSubdivision(const SubdivisionCage& cage, const M44f& m);
+    RTCGeometry MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage,
+                                const M44f& m);
     RTCGeometry MakeCurves(const CurveSet& curves, const M44f& m);
     RTCGeometry MakePoints(const PointSet& points, const M44f& m);
     ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit,
@@ -197,7 +203,8 @@ RTCGeometry RayScene::Impl::MakeQuadric(GeometryRecord& record, const QuadricSha
     return g;
 }
 
-RTCGeometry RayScene::Impl::MakeSubdivision(const SubdivisionCage& cage, const M44f& m) {
+RTCGeometry RayScene::Impl::MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage,
+                                            const M44f& m) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SUBDIVISION);
     auto copy = [&](RTCBufferType type, RTCFormat format, size_t elementSize, const void* data,
                     size_t count) {
@@ -231,6 +238,32 @@ RTCGeometry RayScene::Impl::MakeSubdivision(const SubdivisionCage& cage, const M
     rtcSetGeometrySubdivisionMode(g, 0,
                                   cage.interpolateBoundary ? RTC_SUBDIVISION_MODE_PIN_CORNERS
                                                            : RTC_SUBDIVISION_MODE_NO_BOUNDARY);
+    // Vertex and varying variables ride along as vertex attributes, so that rtcInterpolate
+    // evaluates them on the limit surface like P.
+    record.attributeSlot.assign(cage.vars.vars.size(), -1);
+    unsigned slots = 0;
+    for (size_t i = 0; i < cage.vars.vars.size(); ++i) {
+        const PrimVar& var = cage.vars.vars[i];
+        const bool perVertex =
+            var.decl.cls == ParamClass::Vertex || var.decl.cls == ParamClass::Varying;
+        if (!perVertex || var.components > 16 || var.ValueCount() != int(cage.positions.size()))
+            continue;
+        record.attributeSlot[i] = static_cast<int>(slots++);
+    }
+    rtcSetGeometryVertexAttributeCount(g, slots);
+    for (size_t i = 0; i < cage.vars.vars.size(); ++i) {
+        if (record.attributeSlot[i] < 0) continue;
+        const PrimVar& var = cage.vars.vars[i];
+        // Padded to a multiple of 4 floats: Embree reads attributes 4 lanes at a time.
+        const size_t stride = ((var.components + 3) / 4) * 4;
+        auto* dst = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, record.attributeSlot[i],
+            static_cast<RTCFormat>(RTC_FORMAT_FLOAT + var.components - 1), stride * sizeof(float),
+            var.ValueCount()));
+        for (int v = 0; v < var.ValueCount(); ++v)
+            for (size_t c = 0; c < stride; ++c)
+                dst[v * stride + c] = c < size_t(var.components) ? var.Value(v)[c] : 0.f;
+    }
     rtcSetGeometryTessellationRate(g, 16.f);
     return g;
 }
@@ -303,7 +336,7 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape) {
     } else if (const auto* cage = std::get_if<SubdivisionCage>(&shape.geometry)) {
         if (cage->faceVertexCounts.empty()) return;
         record->vars = &cage->vars;
-        g = MakeSubdivision(*cage, m);
+        g = MakeSubdivision(*record, *cage, m);
     } else if (const auto* curves = std::get_if<CurveSet>(&shape.geometry)) {
         if (curves->segmentFirst.empty()) return;
         record->vars = &curves->vars;
@@ -313,7 +346,19 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape) {
         record->vars = &points->vars;
         g = MakePoints(*points, m);
     }
-    if (g) Attach(level, g, std::move(record));
+    if (!g) return;
+    const std::vector<PrimVar>& vars = record->vars->vars;
+    for (size_t i = 0; i < vars.size(); ++i) {
+        const std::string& name = vars[i].decl.name;
+        int* index = name == "Cs"   ? &record->cs
+                     : name == "Os" ? &record->os
+                     : name == "st" ? &record->st
+                     : name == "s"  ? &record->s
+                     : name == "t"  ? &record->t
+                                    : nullptr;
+        if (index) *index = static_cast<int>(i);
+    }
+    Attach(level, g, std::move(record));
 }
 
 RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
@@ -431,6 +476,33 @@ ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const Ray
     return out;
 }
 
+// One variable of a record at a hit: through Embree for a subdivision surface's per-vertex
+// data, through the stencils for everything else.
+void InterpolateRecordVar(const GeometryRecord& record, int index, const SurfacePoint& sp,
+                          float* out) {
+    const PrimVar& var = record.vars->vars[index];
+    if (!record.attributeSlot.empty() && record.attributeSlot[index] >= 0) {
+        rtcInterpolate0(record.geometry, sp.primID, sp.hitU, sp.hitV,
+                        RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, record.attributeSlot[index], out,
+                        var.components);
+        return;
+    }
+    InterpolatePrimVar(var, sp.stencils, out);
+}
+
+bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& name,
+                                  std::vector<float>* out) const {
+    if (!sp.record) return false;
+    const std::vector<PrimVar>& vars = sp.record->vars->vars;
+    for (size_t i = 0; i < vars.size(); ++i) {
+        if (vars[i].decl.name != name || vars[i].decl.type == ParamType::String) continue;
+        out->assign(vars[i].components, 0.f);
+        InterpolateRecordVar(*sp.record, static_cast<int>(i), sp, out->data());
+        return true;
+    }
+    return false;
+}
+
 SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit) const {
     const Impl& s = *impl_;
     const GeometryRecord* record;
@@ -458,28 +530,31 @@ SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hi
     sp.N = flip * Normalized(TransformNormal(objectFromWorld, object.N));
     sp.u = object.geometry.u, sp.v = object.geometry.v;
 
+    sp.record = record;
+    sp.primID = hit.primID;
+    sp.hitU = hit.u, sp.hitV = hit.v;
+    sp.stencils = object.stencils;
+
     const Attributes& attributes = *record->shape->attributes;
     sp.Cs = attributes.color;
     sp.Os = attributes.opacity;
-    const PrimVarSet* vars = record->vars;
-    if (const PrimVar* cs = vars->Find("Cs"); cs && cs->components == int(sp.Cs.size()))
-        InterpolatePrimVar(*cs, object.stencils, sp.Cs.data());
-    if (const PrimVar* os = vars->Find("Os"); os && os->components == int(sp.Os.size()))
-        InterpolatePrimVar(*os, object.stencils, sp.Os.data());
+    const std::vector<PrimVar>& vars = record->vars->vars;
+    auto fetch = [&](int index, int components, float* out) {
+        if (index >= 0 && vars[index].components == components)
+            InterpolateRecordVar(*record, index, sp, out);
+    };
+    fetch(record->cs, static_cast<int>(sp.Cs.size()), sp.Cs.data());
+    fetch(record->os, static_cast<int>(sp.Os.size()), sp.Os.data());
     // s, t: from primitive variables, else the TextureCoordinates mapped over (u, v).
     const std::vector<float>& tc = attributes.textureCoordinates;
     const float u = sp.u, v = sp.v;
     sp.s = (1 - u) * (1 - v) * tc[0] + u * (1 - v) * tc[2] + (1 - u) * v * tc[4] + u * v * tc[6];
     sp.t = (1 - u) * (1 - v) * tc[1] + u * (1 - v) * tc[3] + (1 - u) * v * tc[5] + u * v * tc[7];
-    if (const PrimVar* st = vars->Find("st"); st && st->components == 2) {
-        float value[2];
-        InterpolatePrimVar(*st, object.stencils, value);
-        sp.s = value[0], sp.t = value[1];
-    }
-    if (const PrimVar* sv = vars->Find("s"); sv && sv->components == 1)
-        InterpolatePrimVar(*sv, object.stencils, &sp.s);
-    if (const PrimVar* tv = vars->Find("t"); tv && tv->components == 1)
-        InterpolatePrimVar(*tv, object.stencils, &sp.t);
+    float st[2] = {sp.s, sp.t};
+    fetch(record->st, 2, st);
+    sp.s = st[0], sp.t = st[1];
+    fetch(record->s, 1, &sp.s);
+    fetch(record->t, 1, &sp.t);
     return sp;
 }
 

@@ -5,6 +5,8 @@
 #include <Imath/ImathVec.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "render/surface_point.h"
 #include "rib/diagnostics.h"
@@ -33,6 +35,11 @@ class RayScene {
     bool Occluded(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar) const;
     // The surface at a hit, in world space, with Cs, Os, s, t interpolated.
     SurfacePoint Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit) const;
+
+    // The primitive variable `name` of the shape at a hit, interpolated by its class (in the
+    // primitive's object space, as given). False if the shape has no such variable.
+    bool InterpolatePrimVar(const SurfacePoint& sp, const std::string& name,
+                            std::vector<float>* out) const;
 
     size_t GeometryCount() const;
 

@@ -7,15 +7,24 @@
 
 #include <vector>
 
+#include "render/shape_evaluation.h"
 #include "scene/frame.h"
 
 namespace gonio {
+
+struct GeometryRecord;  // ray_scene.cpp's record of an Embree geometry
 
 struct SurfacePoint {
     Imath::V3f P, N, Ng, dPdu, dPdv;  // world space; N and Ng unit length, facing "outside"
     float u = 0, v = 0, s = 0, t = 0;
     std::vector<float> Cs, Os;  // ncomps values each
     const SceneShape* shape = nullptr;
+
+    // Where the hit lies, so that RayScene::InterpolatePrimVar can fetch any primitive variable.
+    const GeometryRecord* record = nullptr;
+    unsigned primID = 0;
+    float hitU = 0, hitV = 0;
+    ClassStencils stencils;
 };
 
 }  // namespace gonio

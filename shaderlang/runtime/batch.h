@@ -19,6 +19,7 @@
 namespace gonio::sl {
 
 class ShadingContext;
+class GlobalsView;  // shaderlang/runtime/globals_view.h
 
 struct FloatArg {
     float* data = nullptr;
@@ -47,6 +48,8 @@ struct BuiltinCall {
     StringArg stringResult;
     ShadingContext* context = nullptr;  // renderer state, lights, spaces (shading_context.h)
     int colorComponents = 3;
+    // The batch's shading globals by name, for kernels flagged kReadsGlobals (globals_view.h).
+    const GlobalsView* globals = nullptr;
 
     bool IsActive(int point) const { return !active || active[point]; }
     // The points a kernel must compute: all n for a varying result, just point 0 for a uniform

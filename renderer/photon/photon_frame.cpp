@@ -1,0 +1,105 @@
+#include "photon/photon_frame.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "photon_map.h"
+#include "render/ray_scene.h"
+
+namespace gonio {
+namespace {
+
+constexpr float kDegrees = 3.14159265358979f / 180;
+
+// Fails early, before minutes of tracing, when the map could not be written.
+bool CheckWritable(const std::string& path, const FileLoc& loc, Diagnostics& diagnostics) {
+    const std::string probe = path + ".probe." + std::to_string(::getpid());
+    std::FILE* f = std::fopen(probe.c_str(), "wb");
+    if (!f) {
+        diagnostics.Error(
+            loc, "BRDFLight: cannot write the photon map '" + path + "': " + std::strerror(errno));
+        return false;
+    }
+    std::fclose(f);
+    std::remove(probe.c_str());
+    return true;
+}
+
+bool WriteMap(const std::string& path, const PhotonTraceResult& result, const FileLoc& loc,
+              Diagnostics& diagnostics) {
+    try {
+        const uint64_t count = result.stats.escapedUp;
+        PhotonMapWriter writer(path, {count, result.stats.paths}, result.ncomps);
+        const size_t stride = kFirstColour + result.ncomps;
+        for (size_t i = 0; i < count; ++i) writer.Append(result.rows.data() + i * stride);
+        writer.Close();
+        return true;
+    } catch (const std::exception& e) {
+        diagnostics.Error(loc, std::string("BRDFLight: ") + e.what());
+        return false;
+    }
+}
+
+}  // namespace
+
+std::string PhotonSummary(const std::string& output, const PhotonStats& s) {
+    const double paths = std::max<double>(s.paths, 1);
+    char line[512];
+    std::snprintf(
+        line, sizeof line,
+        "BRDFLight: %llu paths -> %s: %llu photons escaped up, %llu down, %llu lost "
+        "(%llu missed the geometry, %llu at the bounce limit), %llu absorbed; "
+        "mean bounces %.3f; albedo",
+        static_cast<unsigned long long>(s.paths), output.c_str(),
+        static_cast<unsigned long long>(s.escapedUp),
+        static_cast<unsigned long long>(s.escapedDown), static_cast<unsigned long long>(s.Lost()),
+        static_cast<unsigned long long>(s.missed), static_cast<unsigned long long>(s.bounceLimit),
+        static_cast<unsigned long long>(s.absorbed), s.bounces / paths);
+    std::string text = line;
+    for (double e : s.energyUp) {
+        std::snprintf(line, sizeof line, " %.4f", e / paths);
+        text += line;
+    }
+    std::snprintf(line, sizeof line, "; %.3f s, %.3f M paths/s on %d threads", s.seconds,
+                  s.seconds > 0 ? s.paths / s.seconds * 1e-6 : 0.0, s.threads);
+    return text + line;
+}
+
+bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
+                      PhotonStats* stats) {
+    BrdfLightOptions options;
+    if (!ReadBrdfLightOptions(frame, diagnostics, &options)) return false;
+    const std::string output =
+        settings.outputOverride.empty() ? options.textureName : settings.outputOverride;
+    if (frame.shapes.empty() && frame.instances.empty()) {
+        diagnostics.Error(options.loc,
+                          "BRDFLight: the scene has no geometry to trace photons through "
+                          "(expected micro geometry between WorldBegin and WorldEnd)");
+        return false;
+    }
+    if (!CheckWritable(output, options.loc, diagnostics)) return false;
+
+    const RayScene scene(frame, diagnostics);
+    const MicroBrdfTable brdfs = BuildMicroBrdfTable(frame, diagnostics);
+    PhotonTraceSettings trace;
+    trace.paths = static_cast<uint64_t>(options.rays);
+    trace.area = options.area;
+    trace.isotropic = options.isotropic;
+    trace.seed = options.hasSeed ? options.seed : settings.seed;
+    trace.maxDepth = options.maxDepth;
+    trace.periodic = options.periodic;
+    trace.thetaMin = options.thetaMin * kDegrees;
+    trace.thetaMax = options.thetaMax * kDegrees;
+    trace.progress = settings.progress || ::isatty(STDERR_FILENO);
+    const PhotonTraceResult result = TracePhotons(frame, scene, brdfs, trace);
+    if (stats) *stats = result.stats;
+    if (!WriteMap(output, result, options.loc, diagnostics)) return false;
+    std::fprintf(stderr, "%s\n", PhotonSummary(output, result.stats).c_str());
+    return true;
+}
+
+}  // namespace gonio

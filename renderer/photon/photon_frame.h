@@ -1,0 +1,20 @@
+#pragma once
+// `gonio render` of a frame with Option "BRDFLight": trace the photons, write the photon map
+// (temporary name, then rename) and print a summary instead of rendering an image.
+
+#include "photon/brdflight_options.h"
+#include "photon/photon_tracer.h"
+#include "render/frame_renderer.h"
+
+namespace gonio {
+
+// Reads the options, traces and writes the map. Returns false if nothing usable was written
+// (every reason already reported): bad options, no geometry, an unwritable output. The
+// summary goes to stderr; `stats`, when given, receives the counts.
+bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
+                      PhotonStats* stats = nullptr);
+
+// The summary line of a run, as printed.
+std::string PhotonSummary(const std::string& output, const PhotonStats& stats);
+
+}  // namespace gonio

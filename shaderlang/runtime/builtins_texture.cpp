@@ -1,0 +1,202 @@
+// Texture built-ins (RISpec §15.7): texture, environment, shadow, through ShadingContext (the
+// renderer uses OpenImageIO's TextureSystem).
+//
+// The name may select a first channel as RSL's name[chan] does: "wood.tx[1]". The coordinates
+// are the numeric arguments after the name: texture takes (s, t) or the four corners
+// (s1, t1, ..., s4, t4); the compiler supplies the globals s and t for texture("name").
+// environment takes D or D1..D4, shadow P or P1..P4 (four are averaged). Then come optional
+// ("name", value) pairs: "width"/"swidth"/"twidth" scale the filter footprint, "blur"/"sblur"/
+// "tblur" widen it by a fraction of the texture; "filter", "fill", "samples" and "bias" are
+// accepted and left to the renderer's defaults.
+
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+#include "shaderlang/runtime/builtins_util.h"
+#include "shaderlang/shading_context.h"
+
+namespace gonio::sl::builtins {
+
+namespace {
+
+struct TextureName {
+    std::string file;
+    int firstChannel = 0;
+};
+
+// Splits "file[k]" into the file and the first channel k.
+TextureName ParseTextureName(const std::string& name) {
+    TextureName out{name, 0};
+    size_t open = name.rfind('[');
+    if (!name.empty() && name.back() == ']' && open != std::string::npos) {
+        std::string index = name.substr(open + 1, name.size() - open - 2);
+        char* end = nullptr;
+        long k = std::strtol(index.c_str(), &end, 10);
+        if (!index.empty() && end && *end == '\0' && k >= 0) {
+            out.file = name.substr(0, open);
+            out.firstChannel = static_cast<int>(k);
+        }
+    }
+    return out;
+}
+
+// The numeric arguments after the name, up to the first string (the options).
+int CoordinateArgCount(const BuiltinCall& call) {
+    int count = 0;
+    while (1 + count < call.argCount && call.argTypes[1 + count].base != BaseType::String) ++count;
+    return count;
+}
+
+struct TextureOptions {
+    float swidth = 1.0f, twidth = 1.0f, sblur = 0.0f, tblur = 0.0f;
+};
+
+TextureOptions ParseOptions(const BuiltinCall& call, int first) {
+    TextureOptions o;
+    for (int a = first; a + 1 < call.argCount; a += 2) {
+        if (call.argTypes[a].base != BaseType::String || !call.strings[a].data) continue;
+        if (call.argTypes[a + 1].base != BaseType::Float) continue;
+        const std::string& name = call.strings[a].data[0];
+        float v = Float(call.args[a + 1], 0);
+        if (name == "width") o.swidth = o.twidth = v;
+        else if (name == "swidth") o.swidth = v;
+        else if (name == "twidth") o.twidth = v;
+        else if (name == "blur") o.sblur = o.tblur = v;
+        else if (name == "sblur") o.sblur = v;
+        else if (name == "tblur") o.tblur = v;
+    }
+    return o;
+}
+
+// Copies component c of argument a into a plane of n floats (uniform arguments broadcast).
+void Plane(const BuiltinCall& call, int a, int c, std::vector<float>* out) {
+    out->resize(call.n);
+    for (int p = 0; p < call.n; ++p) (*out)[p] = call.args[a].At(c, p);
+}
+
+// Differences of a plane across each point's grid neighbour (0 where there is none).
+std::vector<float> NeighbourDifference(const std::vector<float>& v, const int* neighbours) {
+    std::vector<float> d(v.size(), 0.0f);
+    if (!neighbours) return d;
+    for (size_t p = 0; p < v.size(); ++p) {
+        int q = neighbours[p];
+        if (q >= 0) d[p] = v[q] - v[p];
+    }
+    return d;
+}
+
+void WarnTextureFailure(const BuiltinCall& call, const std::string& file) {
+    call.context->RuntimeWarning("texture:" + file, "cannot read texture \"" + file + "\"");
+}
+
+void CopyOut(const BuiltinCall& call, const std::vector<float>& out) {
+    const int n = call.n, w = call.result.width;
+    ForEachPoint(call, [&](int p) {
+        for (int c = 0; c < w; ++c) call.result.At(c, p) = out[c * n + p];
+    });
+}
+
+void TextureKernel(const BuiltinCall& call) {
+    const int n = call.n, w = call.result.width;
+    const TextureName name = ParseTextureName(call.strings[0].data[0]);
+    const int coords = CoordinateArgCount(call);
+    const TextureOptions options = ParseOptions(call, 1 + coords);
+    std::vector<float> s, t, dsdx, dtdx, dsdy, dtdy;
+    if (coords >= 8) {  // four corners: (s1,t1) (s2,t2) along u, (s3,t3) along v
+        std::vector<float> s2, t2, s3, t3;
+        Plane(call, 1, 0, &s);
+        Plane(call, 2, 0, &t);
+        Plane(call, 3, 0, &s2);
+        Plane(call, 4, 0, &t2);
+        Plane(call, 5, 0, &s3);
+        Plane(call, 6, 0, &t3);
+        dsdx.resize(n), dtdx.resize(n), dsdy.resize(n), dtdy.resize(n);
+        for (int p = 0; p < n; ++p) {
+            dsdx[p] = s2[p] - s[p], dtdx[p] = t2[p] - t[p];
+            dsdy[p] = s3[p] - s[p], dtdy[p] = t3[p] - t[p];
+        }
+    } else if (coords >= 2) {
+        Plane(call, 1, 0, &s);
+        Plane(call, 2, 0, &t);
+        const int* un = call.context ? call.context->UNeighbours() : nullptr;
+        const int* vn = call.context ? call.context->VNeighbours() : nullptr;
+        dsdx = NeighbourDifference(s, un), dtdx = NeighbourDifference(t, un);
+        dsdy = NeighbourDifference(s, vn), dtdy = NeighbourDifference(t, vn);
+    } else {
+        if (call.context) {
+            call.context->RuntimeWarning("texture:coordinates",
+                                         "texture() needs coordinates (s, t)");
+        }
+        ForEachPoint(call, [&](int p) {
+            for (int c = 0; c < w; ++c) call.result.At(c, p) = 0.0f;
+        });
+        return;
+    }
+    for (int p = 0; p < n; ++p) {
+        dsdx[p] = dsdx[p] * options.swidth + std::copysign(options.sblur, dsdx[p]);
+        dsdy[p] *= options.swidth;
+        dtdx[p] *= options.twidth;
+        dtdy[p] = dtdy[p] * options.twidth + std::copysign(options.tblur, dtdy[p]);
+    }
+    std::vector<float> out(static_cast<size_t>(w) * n, 0.0f);
+    if (call.context &&
+        !call.context->Texture(name.file, name.firstChannel, w, s.data(), t.data(), dsdx.data(),
+                               dtdx.data(), dsdy.data(), dtdy.data(), call.active, out.data())) {
+        WarnTextureFailure(call, name.file);
+    }
+    CopyOut(call, out);
+}
+
+// The mean of the coordinate triples after the name, as 3 planes of n floats.
+std::vector<float> MeanTriple(const BuiltinCall& call, int count) {
+    const int n = call.n;
+    std::vector<float> v(3 * static_cast<size_t>(n), 0.0f);
+    for (int a = 1; a <= count; ++a) {
+        for (int c = 0; c < 3; ++c) {
+            for (int p = 0; p < n; ++p) v[c * n + p] += call.args[a].At(c, p) / count;
+        }
+    }
+    return v;
+}
+
+void EnvironmentKernel(const BuiltinCall& call) {
+    const int n = call.n, w = call.result.width;
+    const TextureName name = ParseTextureName(call.strings[0].data[0]);
+    const int coords = CoordinateArgCount(call);
+    std::vector<float> directions = MeanTriple(call, coords >= 4 ? 4 : 1);
+    std::vector<float> out(static_cast<size_t>(w) * n, 0.0f);
+    if (call.context && !call.context->Environment(name.file, name.firstChannel, w,
+                                                   directions.data(), call.active, out.data())) {
+        WarnTextureFailure(call, name.file);
+    }
+    CopyOut(call, out);
+}
+
+void ShadowKernel(const BuiltinCall& call) {
+    const int n = call.n;
+    const TextureName name = ParseTextureName(call.strings[0].data[0]);
+    const int coords = CoordinateArgCount(call);
+    std::vector<float> points = MeanTriple(call, coords >= 4 ? 4 : 1);
+    std::vector<float> out(n, 0.0f);
+    if (call.context && !call.context->Shadow(name.file, points.data(), call.active, out.data())) {
+        WarnTextureFailure(call, name.file);
+    }
+    ForEachPoint(call, [&](int p) {
+        for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = out[p];
+    });
+}
+
+}  // namespace
+
+void AddTextureBuiltins(BuiltinList* list) {
+    const unsigned flags = kVaryingResult | kNeedsDerivatives;
+    list->Add("texture", "f", "s*", TextureKernel, flags);
+    list->Add("texture", "c", "s*", TextureKernel, flags);
+    list->Add("environment", "f", "s*", EnvironmentKernel, kVaryingResult);
+    list->Add("environment", "c", "s*", EnvironmentKernel, kVaryingResult);
+    list->Add("shadow", "f", "s*", ShadowKernel, kVaryingResult);
+    list->Add("shadow", "c", "s*", ShadowKernel, kVaryingResult);
+}
+
+}  // namespace gonio::sl::builtins
