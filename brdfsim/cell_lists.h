@@ -37,7 +37,8 @@ struct CellLists {
 template <typename Emit>
 CellLists CellLists::Build(std::size_t numCells, std::size_t numSplats, const Emit& emit,
                            const ProgressFn& progress) {
-    const std::size_t byMemory = std::max<std::size_t>(1, (std::size_t(1) << 24) / numCells);
+    // Per-chunk counters cost 12 bytes a cell: keep them to some tens of MB for fine grids.
+    const std::size_t byMemory = std::max<std::size_t>(2, (std::size_t(1) << 21) / numCells);
     const std::size_t chunks =
         std::max<std::size_t>(1, std::min({(numSplats + 1023) / 1024, byMemory, std::size_t(256)}));
     std::vector<std::uint32_t> counts(chunks * numCells, 0);

@@ -196,27 +196,24 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
 bool PhotonMapReader::ReadBatch(std::size_t maxPhotons, std::vector<float>& rows) {
     if (eof_) return false;
     const std::size_t before = rows.size();
-    std::vector<char> chunk;
+    if (buffer_.empty()) buffer_.resize(2 * kChunkBytes);
     while (!eof_ && (ncomps_ == 0 || (rows.size() - before) / (kFirstColour + ncomps_) <
                                          std::max<std::size_t>(maxPhotons, 1))) {
-        chunk.assign(carry_.begin(), carry_.end());
-        const std::size_t old = chunk.size();
-        chunk.resize(old + kChunkBytes);
-        const std::size_t got = std::fread(chunk.data() + old, 1, kChunkBytes, file_);
-        chunk.resize(old + got);
+        const std::size_t got = std::fread(buffer_.data() + carry_, 1, kChunkBytes, file_);
         if (got < kChunkBytes) {
             if (std::ferror(file_)) throw PhotonMapIoError(path_ + ": read error");
             eof_ = true;
         }
-        const char* begin = chunk.data();
-        const char* end = begin + chunk.size();
+        const char* begin = buffer_.data();
+        const char* end = begin + carry_ + got;
         const char* cut = end;
         if (!eof_) {
             while (cut > begin && cut[-1] != '\n') --cut;
             if (cut == begin) throw PhotonMapError(path_ + ": a line longer than 8 MB");
         }
-        carry_.assign(cut, end);
         ParsePieces(begin, cut, rows);
+        carry_ = end - cut;
+        std::memmove(buffer_.data(), cut, carry_);
     }
     if (eof_ && photonsRead_ != header_.count) {
         throw PhotonMapError(path_ + ": truncated: the first line announces " +

@@ -71,7 +71,8 @@ private:
     int ncomps_ = 0;
     std::uint64_t photonsRead_ = 0;
     std::uint64_t lineNumber_ = 1;  // lines consumed so far
-    std::string carry_;             // incomplete last line of the previous chunk
+    std::vector<char> buffer_;      // allocated once: carry + one chunk
+    std::size_t carry_ = 0;         // bytes of an incomplete line at the front of buffer_
     bool eof_ = false;
 };
 

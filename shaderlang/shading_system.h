@@ -75,7 +75,10 @@ public:
     std::string Disassemble() const;
 
 private:
-    friend class Compiler;
+    friend std::shared_ptr<const Shader> CompileShaderSource(const std::string&,
+                                                             const std::string&,
+                                                             const CompileOptions&,
+                                                             Diagnostics&);
     ShaderType type_ = ShaderType::Surface;
     std::string name_, file_;
     int colorComponents_ = 3;
@@ -150,6 +153,9 @@ public:
     // first Run when not called before; call it before sharing the instance between threads.
     void Specialize();
     const Program& Code() const;  // the specialised code (after Specialize)
+    // Keeps variables of the shader body alive through dead-code removal, so that
+    // ShaderExecutor::Output can read them (`gonio shade --print`). Call before Specialize.
+    void KeepVariables() { keepVariables_ = true; }
 
 private:
     friend class ShaderExecutor;
@@ -162,6 +168,7 @@ private:
     std::vector<std::string> bound_;
     std::once_flag specialized_;
     std::shared_ptr<Program> program_;
+    bool keepVariables_ = false;
 };
 
 // The shading globals of one batch of n points, component-major (batch.h). Null pointers take

@@ -1,5 +1,6 @@
 #include "photon/photon_tracer.h"
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -40,12 +41,12 @@ struct TraceContext {
     const MicroBrdfTable& brdfs;
     const PhotonTraceSettings& settings;
     int ncomps;
-    float half;            // half the tile side
-    float cosMin, cosMax;  // of θ_in: cos θmax ≤ cos θ′ ≤ cos θmin
-    float pIn;         // pdf of ω′ per steradian (of the rotation-symmetric law if isotropic)
-    float launch;      // beam origins this far from the sampling area lie outside the bounds
-    float zMin, zMax;  // vertical extent of the geometry
-    float offset;      // ray origin offset off a surface
+    float half = 0;                // half the tile side
+    float cosMin = 1, cosMax = 0;  // of θ_in: cos θmax ≤ cos θ′ ≤ cos θmin
+    float pIn = 0;     // pdf of ω′ per steradian (of the rotation-symmetric law if isotropic)
+    float launch = 0;  // beam origins this far from the sampling area lie outside the bounds
+    float zMin = 0, zMax = 0;  // vertical extent of the geometry
+    float offset = 0;          // ray origin offset off a surface
 };
 
 // Intersects org + t·dir; for a periodic tile the ray runs in the column over the tile and
@@ -223,9 +224,10 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     // 2π sin θ′ p_in to get the density of θ′), so both cases store the same number.
     c.pIn = 1 / (2 * kPi * (c.cosMin - c.cosMax));
     c.launch = reach + settings.area + 1;
-    c.zMin = bounds.min.z;
-    c.zMax = bounds.max.z;
     c.offset = 1e-5f * std::max(bounds.size().length(), 1e-3f);
+    // The slab reaches a little past the geometry so that a ground plane at its bottom is hit.
+    c.zMin = bounds.min.z - 10 * c.offset;
+    c.zMax = bounds.max.z + 10 * c.offset;
 
     const uint64_t numBatches = (settings.paths + kBatch - 1) / kBatch;
     std::vector<Batch> batches(numBatches);
@@ -252,7 +254,9 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
         Accumulate(batch.stats, &result.stats);
         std::vector<float>().swap(batch.rows);
     }
-    result.stats.threads = tbb::this_task_arena::max_concurrency();
+    result.stats.threads = static_cast<int>(std::min<size_t>(
+        tbb::this_task_arena::max_concurrency(),
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -1,6 +1,7 @@
 #include "render/frame_renderer.h"
 
 #include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <unordered_map>
 
 #include "image/film.h"
 #include "image/image_writer.h"
@@ -15,6 +17,7 @@
 #include "render/progress.h"
 #include "render/random.h"
 #include "render/ray_scene.h"
+#include "shading/surface_shading.h"
 
 namespace gonio {
 namespace {
@@ -22,50 +25,126 @@ namespace {
 constexpr int kTileSize = 16;
 constexpr int kMaxLayers = 64;  // transparent surfaces a camera ray may pass through
 
-// The RenderMan default surface until the shading language lands: a facing ratio,
-// Ci = Os·Cs·(Ka + Kd·|N·I|) with Ka = 0.2, Kd = 0.8 (RISpec App. A "defaultsurface").
-void ShadeDefaultSurface(const SurfacePoint& sp, const Imath::V3f& dir, float* colour) {
-    const float facing = std::fabs(sp.N.dot(dir.normalized()));
-    for (size_t c = 0; c < sp.Cs.size(); ++c) colour[c] = sp.Cs[c] * (0.2f + 0.8f * facing);
-}
-
-float Average(const std::vector<float>& values) {
-    float sum = 0;
-    for (float v : values) sum += v;
-    return values.empty() ? 0 : sum / values.size();
-}
-
-// Follows a camera ray through transparent surfaces, compositing front to back. Writes r g b a z.
-int TraceCameraRay(const RayScene& scene, const CameraRay& ray, float* out) {
+// One camera sample on its way through the scene: transparent surfaces let it go on, so its
+// colour is composited front to back over several layers of hits.
+struct SampleState {
+    CameraRay ray;
+    int px, py, s;
+    float x, y;
+    float colour[3] = {0, 0, 0};
     float transmittance[3] = {1, 1, 1};
-    for (int c = 0; c < kStandardChannelCount; ++c) out[c] = 0;
-    out[kChannelZ] = std::numeric_limits<float>::infinity();
-    float tnear = ray.tnear;
-    int rays = 0;
-    for (int layer = 0; layer < kMaxLayers; ++layer) {
+    float depth = std::numeric_limits<float>::infinity();
+    bool alive = true;
+};
+
+// The samples of one tile, shaded layer by layer in batches that share attributes.
+class TileRenderer {
+  public:
+    TileRenderer(const RayScene& scene, const Camera& camera, ShadingWorker& shading,
+                 int colorComponents)
+        : scene_(scene), camera_(camera), shading_(shading), ncomps_(colorComponents) {}
+
+    uint64_t Render(std::vector<SampleState>& samples);
+
+  private:
+    // Reused from layer to layer so that their colour storage is allocated once.
+    std::vector<SurfacePoint> points_;
+    // The next visible (not back-face culled) hit of a sample, or false.
+    bool NextHit(SampleState& sample, SurfacePoint* sp, float* t);
+    void ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
+                    const std::vector<SurfacePoint>& points, const std::vector<float>& hitT);
+
+    const RayScene& scene_;
+    const Camera& camera_;
+    ShadingWorker& shading_;
+    int ncomps_;
+    uint64_t rays_ = 0;
+};
+
+bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
+    const CameraRay& ray = sample.ray;
+    while (true) {
         RayHit hit;
-        ++rays;
-        if (!scene.Intersect(ray.org, ray.dir, tnear, ray.tfar, &hit)) break;
-        tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
-        const SurfacePoint sp = scene.Evaluate(ray.org, ray.dir, hit);
-        const Attributes& attributes = *sp.shape->attributes;
-        if (!attributes.twoSided && sp.Ng.dot(ray.dir) > 0) continue;  // Sides 1: a back face
-        if (std::isinf(out[kChannelZ])) out[kChannelZ] = hit.t;
-        float colour[3] = {0, 0, 0};
-        if (!attributes.matte) ShadeDefaultSurface(sp, ray.dir, colour);
-        float remaining = 0;
-        for (int c = 0; c < 3; ++c) {
-            const float opacity = std::clamp(c < int(sp.Os.size()) ? sp.Os[c] : 1.f, 0.f, 1.f);
-            // A matte object hides what lies behind it and contributes nothing itself.
-            if (!attributes.matte) out[c] += transmittance[c] * opacity * colour[c];
-            transmittance[c] *= 1 - opacity;
-            remaining = std::max(remaining, transmittance[c]);
-        }
-        if (remaining < 1e-4f) break;
+        ++rays_;
+        if (!scene_.Intersect(ray.org, ray.dir, sample.ray.tnear, ray.tfar, &hit)) return false;
+        sample.ray.tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
+        scene_.Evaluate(ray.org, ray.dir, hit, sp);
+        *t = hit.t;
+        if (sp->shape->attributes->twoSided || sp->Ng.dot(ray.dir) <= 0) return true;
     }
-    const float t = (transmittance[0] + transmittance[1] + transmittance[2]) / 3;
-    out[kChannelA] = 1 - t;
-    return rays;
+}
+
+uint64_t TileRenderer::Render(std::vector<SampleState>& samples) {
+    rays_ = 0;
+    std::vector<int> hitSamples;
+    std::vector<float> hitT;
+    if (points_.size() < samples.size()) points_.resize(samples.size());
+    for (int layer = 0; layer < kMaxLayers; ++layer) {
+        hitSamples.clear();
+        hitT.clear();
+        for (int i = 0; i < int(samples.size()); ++i) {
+            SampleState& sample = samples[i];
+            if (!sample.alive) continue;
+            float t;
+            if (!NextHit(sample, &points_[hitSamples.size()], &t)) {
+                sample.alive = false;
+                continue;
+            }
+            if (std::isinf(sample.depth)) sample.depth = t;
+            hitSamples.push_back(i);
+            hitT.push_back(t);
+        }
+        if (hitSamples.empty()) break;
+        ShadeLayer(samples, hitSamples, points_, hitT);
+    }
+    return rays_;
+}
+
+void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
+                              const std::vector<SurfacePoint>& points,
+                              const std::vector<float>& hitT) {
+    // Batches of points that share their attributes, in a fixed order (first appearance), so
+    // that results do not depend on threads.
+    std::vector<const Attributes*> order;
+    std::unordered_map<const Attributes*, std::vector<int>> members;
+    for (int k = 0; k < int(hitSamples.size()); ++k) {
+        const Attributes* attributes = points[k].shape->attributes.get();
+        auto [it, isNew] = members.try_emplace(attributes);
+        if (isNew) order.push_back(attributes);
+        it->second.push_back(k);
+    }
+    std::vector<float> Ci, Oi;
+    for (const Attributes* attributes : order) {
+        const std::vector<int>& batchMembers = members[attributes];
+        ShadingBatch batch;
+        batch.attributes = attributes;
+        for (int k : batchMembers) {
+            const CameraRay& ray = samples[hitSamples[k]].ray;
+            batch.points.push_back(&points[k]);
+            batch.incident.push_back(ray.dir * hitT[k]);
+            batch.depth.push_back(hitT[k]);
+        }
+        Ci.assign(batchMembers.size() * ncomps_, 0.f);
+        Oi.assign(batchMembers.size() * ncomps_, 0.f);
+        if (!attributes->matte) shading_.Shade(batch, Ci.data(), Oi.data());
+        for (size_t j = 0; j < batchMembers.size(); ++j) {
+            SampleState& sample = samples[hitSamples[batchMembers[j]]];
+            float remaining = 0;
+            for (int c = 0; c < 3; ++c) {
+                const int cc = std::min(c, ncomps_ - 1);
+                // A matte object hides what lies behind it and adds nothing itself (RISpec
+                // §4.2.5): its opacity is the surface's Os, not a shader's output.
+                const float opacity = std::clamp(
+                    attributes->matte ? points[batchMembers[j]].Os[cc] : Oi[j * ncomps_ + cc], 0.f,
+                    1.f);
+                if (!attributes->matte)
+                    sample.colour[c] += sample.transmittance[c] * Ci[j * ncomps_ + cc];
+                sample.transmittance[c] *= 1 - opacity;
+                remaining = std::max(remaining, sample.transmittance[c]);
+            }
+            if (remaining < 1e-4f) sample.alive = false;
+        }
+    }
 }
 
 PixelFilter MakeFilter(const Options& options, Diagnostics& diagnostics) {
@@ -123,32 +202,48 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
 
     Progress progress("render", uint64_t(width) * height, settings.progress);
     std::atomic<uint64_t> raysTraced{0};
-    tbb::parallel_for(tbb::blocked_range2d<int>(range.min.y, range.max.y + 1, kTileSize,
-                                                range.min.x, range.max.x + 1, kTileSize),
-                      [&](const tbb::blocked_range2d<int>& tile) {
-                          uint64_t rays = 0;
-                          float values[kStandardChannelCount];
-                          for (int py = tile.rows().begin(); py < tile.rows().end(); ++py) {
-                              for (int px = tile.cols().begin(); px < tile.cols().end(); ++px) {
-                                  for (int sy = 0, s = 0; sy < ysamples; ++sy) {
-                                      for (int sx = 0; sx < xsamples; ++sx, ++s) {
-                                          SampleRandom random(settings.seed, px, py, s);
-                                          // Stratified: one jittered sample in each cell of the
-                                          // pixel's grid.
-                                          const float x = px + (sx + random.Next()) / xsamples;
-                                          const float y = py + (sy + random.Next()) / ysamples;
-                                          const float lensU = random.Next(), lensV = random.Next();
-                                          const CameraRay ray =
-                                              camera.GenerateRay(x, y, lensU, lensV);
-                                          rays += TraceCameraRay(scene, ray, values);
-                                          film.SetSample(px, py, s, x, y, values);
-                                      }
-                                  }
-                              }
-                              progress.Advance(tile.cols().size());
-                          }
-                          raysTraced += rays;
-                      });
+    const std::unique_ptr<SurfaceShading> shading =
+        MakeDefaultSurfaceShading(options.colorComponents);
+    tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
+        [&] { return shading->MakeWorker(); });
+    tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
+    tbb::parallel_for(
+        tbb::blocked_range2d<int>(range.min.y, range.max.y + 1, kTileSize, range.min.x,
+                                  range.max.x + 1, kTileSize),
+        [&](const tbb::blocked_range2d<int>& tile) {
+            std::vector<SampleState> samples;
+            for (int py = tile.rows().begin(); py < tile.rows().end(); ++py) {
+                for (int px = tile.cols().begin(); px < tile.cols().end(); ++px) {
+                    for (int sy = 0, s = 0; sy < ysamples; ++sy) {
+                        for (int sx = 0; sx < xsamples; ++sx, ++s) {
+                            SampleRandom random(settings.seed, px, py, s);
+                            // Stratified: one jittered sample in each cell of the pixel's grid.
+                            SampleState sample;
+                            sample.px = px, sample.py = py, sample.s = s;
+                            sample.x = px + (sx + random.Next()) / xsamples;
+                            sample.y = py + (sy + random.Next()) / ysamples;
+                            const float lensU = random.Next(), lensV = random.Next();
+                            sample.ray = camera.GenerateRay(sample.x, sample.y, lensU, lensV);
+                            samples.push_back(sample);
+                        }
+                    }
+                }
+            }
+            auto& renderer = renderers.local();
+            if (!renderer)
+                renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(),
+                                                          options.colorComponents);
+            raysTraced += renderer->Render(samples);
+            for (const SampleState& sample : samples) {
+                const float coverage = 1 - (sample.transmittance[0] + sample.transmittance[1] +
+                                            sample.transmittance[2]) /
+                                               3;
+                const float values[kStandardChannelCount] = {
+                    sample.colour[0], sample.colour[1], sample.colour[2], coverage, sample.depth};
+                film.SetSample(sample.px, sample.py, sample.s, sample.x, sample.y, values);
+            }
+            progress.Advance(uint64_t(tile.rows().size()) * tile.cols().size());
+        });
     progress.Done();
 
     const Image image = film.Resolve();

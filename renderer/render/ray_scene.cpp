@@ -159,8 +159,7 @@ struct RayScene::Impl {
     void Attach(SceneLevel& level, RTCGeometry geometry, std::unique_ptr<GeometryRecord> record);
     RTCGeometry MakeMesh(const TriangleMesh& mesh, const M44f& m);
     RTCGeometry MakeQuadric(GeometryRecord& record, const QuadricShape& shape);
-    RTCGeometry MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage,
-                                const M44f& m);
+    RTCGeometry MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage, const M44f& m);
     RTCGeometry MakeCurves(const CurveSet& curves, const M44f& m);
     RTCGeometry MakePoints(const PointSet& points, const M44f& m);
     ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit,
@@ -256,10 +255,10 @@ RTCGeometry RayScene::Impl::MakeSubdivision(GeometryRecord& record, const Subdiv
         const PrimVar& var = cage.vars.vars[i];
         // Padded to a multiple of 4 floats: Embree reads attributes 4 lanes at a time.
         const size_t stride = ((var.components + 3) / 4) * 4;
-        auto* dst = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, record.attributeSlot[i],
-            static_cast<RTCFormat>(RTC_FORMAT_FLOAT + var.components - 1), stride * sizeof(float),
-            var.ValueCount()));
+        auto* dst = static_cast<float*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, record.attributeSlot[i],
+                                    static_cast<RTCFormat>(RTC_FORMAT_FLOAT + var.components - 1),
+                                    stride * sizeof(float), var.ValueCount()));
         for (int v = 0; v < var.ValueCount(); ++v)
             for (size_t c = 0; c < stride; ++c)
                 dst[v * stride + c] = c < size_t(var.components) ? var.Value(v)[c] : 0.f;
@@ -504,6 +503,13 @@ bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& nam
 }
 
 SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit) const {
+    SurfacePoint sp;
+    Evaluate(org, dir, hit, &sp);
+    return sp;
+}
+
+void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
+                        SurfacePoint* out) const {
     const Impl& s = *impl_;
     const GeometryRecord* record;
     M44f worldFromSpace, spaceFromWorld;
@@ -520,7 +526,7 @@ SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hi
 
     const M44f worldFromObject = record->spaceFromObject * worldFromSpace;
     const M44f objectFromWorld = spaceFromWorld * record->objectFromSpace;
-    SurfacePoint sp;
+    SurfacePoint& sp = *out;
     sp.shape = record->shape;
     sp.P = worldP;
     sp.dPdu = TransformVector(worldFromObject, object.geometry.dPdu);
@@ -555,7 +561,6 @@ SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hi
     sp.s = st[0], sp.t = st[1];
     fetch(record->s, 1, &sp.s);
     fetch(record->t, 1, &sp.t);
-    return sp;
 }
 
 }  // namespace gonio

@@ -35,6 +35,9 @@ class RayScene {
     bool Occluded(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar) const;
     // The surface at a hit, in world space, with Cs, Os, s, t interpolated.
     SurfacePoint Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit) const;
+    // The same into an existing point, reusing its colour storage (no allocation in loops).
+    void Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
+                  SurfacePoint* sp) const;
 
     // The primitive variable `name` of the shape at a hit, interpolated by its class (in the
     // primitive's object space, as given). False if the shape has no such variable.

@@ -31,7 +31,7 @@ void SceneBuilder::Color(const std::vector<float>& color, const FileLoc& loc) {
                                     " numbers, got " + std::to_string(color.size()));
         return;
     }
-    state_->attributes.color = color;
+    MutableAttributes().color = color;
 }
 
 void SceneBuilder::Opacity(const std::vector<float>& opacity, const FileLoc& loc) {
@@ -40,7 +40,7 @@ void SceneBuilder::Opacity(const std::vector<float>& opacity, const FileLoc& loc
                                     " numbers, got " + std::to_string(opacity.size()));
         return;
     }
-    state_->attributes.opacity = opacity;
+    MutableAttributes().opacity = opacity;
 }
 
 void SceneBuilder::TextureCoordinates(const std::vector<float>& st8, const FileLoc& loc) {
@@ -48,7 +48,7 @@ void SceneBuilder::TextureCoordinates(const std::vector<float>& st8, const FileL
         diagnostics_.Error(loc, "TextureCoordinates needs 8 numbers");
         return;
     }
-    state_->attributes.textureCoordinates = st8;
+    MutableAttributes().textureCoordinates = st8;
 }
 
 void SceneBuilder::SetShader(ShaderInstance* shader, const std::string& name,
@@ -78,7 +78,7 @@ void SceneBuilder::AddLight(SceneLight light) {
     const int index = static_cast<int>(state_->frame.lights.size());
     state_->lightHandles[HandleKey(light.light.handle)] = index;
     state_->frame.lights.push_back(std::move(light));
-    state_->attributes.activeLights.insert(index);
+    MutableAttributes().activeLights.insert(index);
 }
 
 void SceneBuilder::AreaLightSource(const std::string& name, const RtHandle& handle,
@@ -104,31 +104,31 @@ void SceneBuilder::Illuminate(const RtHandle& light, bool on, const FileLoc& loc
     const int index = LightIndex(light, loc);
     if (index < 0) return;
     if (on)
-        state_->attributes.activeLights.insert(index);
+        MutableAttributes().activeLights.insert(index);
     else
-        state_->attributes.activeLights.erase(index);
+        MutableAttributes().activeLights.erase(index);
 }
 
 void SceneBuilder::Surface(const std::string& name, const ParamList& params, const FileLoc& loc) {
-    SetShader(&state_->attributes.surface, name, params, loc);
+    SetShader(&MutableAttributes().surface, name, params, loc);
 }
 
 void SceneBuilder::Displacement(const std::string& name, const ParamList& params,
                                 const FileLoc& loc) {
-    SetShader(&state_->attributes.displacement, name, params, loc);
+    SetShader(&MutableAttributes().displacement, name, params, loc);
 }
 
 void SceneBuilder::Atmosphere(const std::string& name, const ParamList& params,
                               const FileLoc& loc) {
-    SetShader(&state_->attributes.atmosphere, name, params, loc);
+    SetShader(&MutableAttributes().atmosphere, name, params, loc);
 }
 
 void SceneBuilder::Interior(const std::string& name, const ParamList& params, const FileLoc& loc) {
-    SetShader(&state_->attributes.interior, name, params, loc);
+    SetShader(&MutableAttributes().interior, name, params, loc);
 }
 
 void SceneBuilder::Exterior(const std::string& name, const ParamList& params, const FileLoc& loc) {
-    SetShader(&state_->attributes.exterior, name, params, loc);
+    SetShader(&MutableAttributes().exterior, name, params, loc);
 }
 
 // ---- REYES-only attributes: accepted, ignored with one note each ------------------------------
@@ -150,7 +150,7 @@ void SceneBuilder::GeometricApproximation(const std::string&, float, const FileL
     IgnoredRequest("GeometricApproximation", loc);
 }
 
-void SceneBuilder::Matte(bool on, const FileLoc&) { state_->attributes.matte = on; }
+void SceneBuilder::Matte(bool on, const FileLoc&) { MutableAttributes().matte = on; }
 
 // ---- orientation ----------------------------------------------------------------------------
 
@@ -162,7 +162,7 @@ void SceneBuilder::Orientation(const std::string& orientation, const FileLoc& lo
                                                        {"rh", O::RightHanded}};
     for (const auto& [name, value] : kNames) {
         if (orientation == name) {
-            state_->attributes.orientation = value;
+            MutableAttributes().orientation = value;
             return;
         }
     }
@@ -173,7 +173,7 @@ void SceneBuilder::Orientation(const std::string& orientation, const FileLoc& lo
 void SceneBuilder::ReverseOrientation(const FileLoc&) {
     using O = Attributes::Orientation;
     static const O kReversed[] = {O::Inside, O::Outside, O::RightHanded, O::LeftHanded};
-    state_->attributes.orientation = kReversed[static_cast<int>(state_->attributes.orientation)];
+    MutableAttributes().orientation = kReversed[static_cast<int>(state_->attributes.orientation)];
 }
 
 void SceneBuilder::Sides(int sides, const FileLoc& loc) {
@@ -181,19 +181,19 @@ void SceneBuilder::Sides(int sides, const FileLoc& loc) {
         diagnostics_.Error(loc, "Sides must be 1 or 2, got " + std::to_string(sides));
         return;
     }
-    state_->attributes.twoSided = sides == 2;
+    MutableAttributes().twoSided = sides == 2;
 }
 
 void SceneBuilder::Attribute(const std::string& name, const ParamList& params, const FileLoc& loc) {
     if (!IsKnownOptionName(false, name))
         diagnostics_.WarningOnce("Attribute " + name, loc,
                                  "unknown Attribute \"" + name + "\" (kept for shaders)");
-    ParamList& merged = state_->attributes.user[name];
+    ParamList& merged = MutableAttributes().user[name];
     for (const Param& p : params) {
         PrimVar var;
         if (!TypeOptionParam("Attribute", name, p, &var)) continue;
         if (name == "identifier" && var.decl.name == "name" && !var.strings.empty())
-            state_->attributes.identifier = var.strings[0];
+            MutableAttributes().identifier = var.strings[0];
         MergeTypedParam(p, var, &merged);
     }
 }
@@ -211,8 +211,8 @@ void SceneBuilder::Basis(const RtBasis& ubasis, int ustep, const RtBasis& vbasis
         }
         out->step = step;
     };
-    resolve(ubasis, ustep, &state_->attributes.ubasis);
-    resolve(vbasis, vstep, &state_->attributes.vbasis);
+    resolve(ubasis, ustep, &MutableAttributes().ubasis);
+    resolve(vbasis, vstep, &MutableAttributes().vbasis);
 }
 
 void SceneBuilder::TrimCurve(const std::vector<int>&, const std::vector<int>&,

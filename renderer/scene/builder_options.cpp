@@ -195,8 +195,8 @@ void SceneBuilder::ColorSamples(const std::vector<float>& nRGB, const std::vecto
     }
     const int n = static_cast<int>(nRGB.size() / 3);
     state_->options.colorComponents = n;
-    state_->attributes.color.assign(n, 1.f);
-    state_->attributes.opacity.assign(n, 1.f);
+    MutableAttributes().color.assign(n, 1.f);
+    MutableAttributes().opacity.assign(n, 1.f);
 }
 
 void SceneBuilder::RelativeDetail(float, const FileLoc& loc) {

@@ -31,7 +31,9 @@ bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
 void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
     SceneShape shape;
     shape.geometry = std::move(geometry);
-    shape.attributes = std::make_shared<const Attributes>(state_->attributes);
+    if (!state_->snapshot)
+        state_->snapshot = std::make_shared<const Attributes>(state_->attributes);
+    shape.attributes = state_->snapshot;
     shape.worldFromObject = state_->transform;
     shape.loc = loc;
     // Handedness of camera space from object space; camera space is left-handed.

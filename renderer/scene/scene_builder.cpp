@@ -22,10 +22,15 @@ SceneBuilder::SceneBuilder(std::string sceneFile, Diagnostics& diagnostics, Fram
       diagnostics_(diagnostics),
       onFrame_(std::move(onFrame)),
       state_(std::make_unique<State>()) {
-    state_->attributes.ubasis = state_->attributes.vbasis = *NamedBasis("bezier");
+    MutableAttributes().ubasis = MutableAttributes().vbasis = *NamedBasis("bezier");
 }
 
 SceneBuilder::~SceneBuilder() = default;
+
+Attributes& SceneBuilder::MutableAttributes() {
+    state_->snapshot.reset();
+    return state_->attributes;
+}
 
 void SceneBuilder::Finish(const FileLoc& endOfInput) {
     for (size_t i = state_->blocks.size(); i-- > 0;)
@@ -90,7 +95,7 @@ void SceneBuilder::FrameEnd(const FileLoc& loc) {
     if (!PopBlock(Block::Frame, "FrameEnd", loc)) return;
     state_->options = state_->savedOptions.back();
     state_->savedOptions.pop_back();
-    state_->attributes = state_->savedAttributes.back();
+    MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
     state_->transform = state_->savedTransforms.back();
     state_->savedTransforms.pop_back();
@@ -123,7 +128,7 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
 void SceneBuilder::WorldEnd(const FileLoc& loc) {
     if (!PopBlock(Block::World, "WorldEnd", loc)) return;
     state_->inWorld = false;
-    state_->attributes = state_->savedAttributes.back();
+    MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
     state_->transform = state_->savedTransforms.back();
     state_->savedTransforms.pop_back();
@@ -139,7 +144,7 @@ void SceneBuilder::AttributeBegin(const FileLoc& loc) {
 
 void SceneBuilder::AttributeEnd(const FileLoc& loc) {
     if (!PopBlock(Block::Attribute, "AttributeEnd", loc)) return;
-    state_->attributes = state_->savedAttributes.back();
+    MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
     state_->transform = state_->savedTransforms.back();
     state_->savedTransforms.pop_back();
@@ -175,7 +180,7 @@ void SceneBuilder::ObjectEnd(const FileLoc& loc) {
     if (!PopBlock(Block::Object, "ObjectEnd", loc)) return;
     state_->objects[state_->openObjectHandle] = std::move(state_->openObject);
     state_->openObject.reset();
-    state_->attributes = state_->savedAttributes.back();
+    MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
     state_->transform = state_->savedTransforms.back();
     state_->savedTransforms.pop_back();

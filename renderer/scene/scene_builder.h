@@ -205,6 +205,8 @@ class SceneBuilder : public RiTarget {
     void AddLight(SceneLight light);
     bool TypeOptionParam(const std::string& request, const std::string& name, const Param& param,
                          PrimVar* var);
+    // The attribute state for writing: primitives after the change get a new snapshot.
+    Attributes& MutableAttributes();
     // Adds a primitive's shape with the current attributes and transform.
     void AddShape(ShapeGeometry geometry, const FileLoc& loc);
     bool TypeVars(const ParamList& params, PrimVarSet* vars);

@@ -18,7 +18,9 @@ namespace gonio {
 struct SceneBuilder::State {
     Options options;
     std::vector<Options> savedOptions;  // FrameBegin saves, FrameEnd restores
-    Attributes attributes;
+    Attributes attributes;              // change only through SceneBuilder::MutableAttributes()
+    // The attributes as the last primitive saw them, shared by primitives until they change.
+    std::shared_ptr<const Attributes> snapshot;
     std::vector<Attributes> savedAttributes;
     // Object space to the current base space: camera space before WorldBegin, world space
     // inside it (the camera transform is frozen at WorldBegin).

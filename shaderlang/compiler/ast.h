@@ -73,7 +73,7 @@ struct Node {
     Symbol* symbol = nullptr;    // Identifier, VarDecl: the variable
     int builtin = -1;            // Call: the BuiltinTable() row
     Node* function = nullptr;    // Call: the user FunctionDef
-    bool castOnly = false;       // Cast: a pure type conversion (no space)
+    bool hasError = false;       // an error was reported here: no follow-on errors
 };
 
 // The result of parsing one preprocessed file.

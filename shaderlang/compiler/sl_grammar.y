@@ -11,10 +11,9 @@
 %parse-param {gonio::sl::ParseState* state}
 
 /* Statements that begin with a type name are declarations (or a nested function) before they
-   are casts: `float x = 1;` declares x. The reduce/reduce conflicts this leaves are resolved by
-   rule order, declarations first. */
-%expect 1
-%expect-rr 6
+   are casts: `float x;` declares x, `float f() {...}` defines f. Bison resolves the 4 shift/
+   reduce and 2 reduce/reduce conflicts this leaves towards the declaration (shift, and the
+   earlier rule); CMake passes -Wno-conflicts-sr -Wno-conflicts-rr for them. */
 
 %code requires {
 #include <string>
@@ -105,17 +104,16 @@ void ApplyPrefix(Node* list, const Node* prefix) {
 %left '^'
 %left '*' '/'
 %left '.'
-%right UMINUS '!'
-%right CAST
-%nonassoc LOWER_THAN_ELSE
-%nonassoc ELSE
+%precedence UMINUS '!'
+%precedence LOWER_THAN_ELSE
+%precedence ELSE
 
 %start file
 
 %%
 
 file
-    : /* empty */
+    : %empty
     | file definition
     ;
 
@@ -183,7 +181,7 @@ prefix
     ;
 
 formals
-    : /* empty */ { $$ = Make(state, NodeKind::List, @$); }
+    : %empty { $$ = Make(state, NodeKind::List, @$); }
     | formal_groups { $$ = $1; }
     | formal_groups ';' { $$ = $1; }
     ;
@@ -238,7 +236,7 @@ block
     ;
 
 stmts
-    : /* empty */ { $$ = Make(state, NodeKind::Block, @$); }
+    : %empty { $$ = Make(state, NodeKind::Block, @$); }
     | stmts stmt { $$ = $1; if ($2) $$->kids.push_back($2); }
     ;
 
@@ -271,17 +269,27 @@ stmt
     ;
 
 opt_level
-    : /* empty */ { $$ = 1; }
+    : %empty { $$ = 1; }
     | NUMBER { $$ = $1; }
     ;
 
 opt_expr
-    : /* empty */ { $$ = nullptr; }
+    : %empty { $$ = nullptr; }
     | expr { $$ = $1; }
     ;
 
 decl_stmt
-    : prefix defs ';' { ApplyPrefix($2, $1); $$ = $2; }
+    : type_kw defs ';' {
+          Node* prefix = Make(state, NodeKind::List, @1);
+          prefix->declType.base = gonio::sl::BaseType($1);
+          ApplyPrefix($2, prefix);
+          $$ = $2;
+      }
+    | qualifiers type_kw defs ';' {
+          $1->declType.base = gonio::sl::BaseType($2);
+          ApplyPrefix($3, $1);
+          $$ = $3;
+      }
     ;
 
 defs
@@ -290,7 +298,7 @@ defs
     ;
 
 args
-    : /* empty */ { $$ = Make(state, NodeKind::Call, @$); }
+    : %empty { $$ = Make(state, NodeKind::Call, @$); }
     | arg_list { $$ = $1; }
     ;
 
@@ -325,11 +333,11 @@ expr
     | '-' expr %prec UMINUS { $$ = Make(state, NodeKind::Unary, @1, {$2}); $$->op = '-'; }
     | '+' expr %prec UMINUS { $$ = $2; }
     | '!' expr { $$ = Make(state, NodeKind::Unary, @1, {$2}); $$->op = '!'; }
-    | type_kw cast_operand %prec CAST {
+    | type_kw cast_operand {
           $$ = Make(state, NodeKind::Cast, @1, {$2});
           $$->declType.base = gonio::sl::BaseType($1);
       }
-    | type_kw STRINGLIT cast_operand %prec CAST {
+    | type_kw STRINGLIT cast_operand {
           $$ = Make(state, NodeKind::Cast, @1, {$3});
           $$->declType.base = gonio::sl::BaseType($1);
           $$->name = std::move(*$2);

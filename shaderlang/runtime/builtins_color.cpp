@@ -39,9 +39,9 @@ const M44 kXyzFromRgbRows(0.412453f, 0.357580f, 0.180423f, 0.0f,  //
                           0.019334f, 0.119193f, 0.950227f, 0.0f,  //
                           0.0f, 0.0f, 0.0f, 1.0f);
 // NTSC YIQ (FCC 1953).
-const M44 kYiqFromRgbRows(0.299f, 0.587f, 0.114f, 0.0f,     //
-                          0.596f, -0.274f, -0.322f, 0.0f,   //
-                          0.211f, -0.523f, 0.312f, 0.0f,    //
+const M44 kYiqFromRgbRows(0.299f, 0.587f, 0.114f, 0.0f,    //
+                          0.596f, -0.274f, -0.322f, 0.0f,  //
+                          0.211f, -0.523f, 0.312f, 0.0f,   //
                           0.0f, 0.0f, 0.0f, 1.0f);
 
 // The matrices above are written as rows acting on column vectors: y = M·x.
@@ -56,9 +56,12 @@ V3 HsvFromRgb(const V3& c) {
     float d = mx - mn;
     float h = 0.0f;
     if (d > 0.0f) {
-        if (mx == c.x) h = (c.y - c.z) / d;
-        else if (mx == c.y) h = 2.0f + (c.z - c.x) / d;
-        else h = 4.0f + (c.x - c.y) / d;
+        if (mx == c.x)
+            h = (c.y - c.z) / d;
+        else if (mx == c.y)
+            h = 2.0f + (c.z - c.x) / d;
+        else
+            h = 4.0f + (c.x - c.y) / d;
         h /= 6.0f;
         if (h < 0.0f) h += 1.0f;
     }
@@ -71,12 +74,18 @@ V3 RgbFromHsv(const V3& c) {
     float f = h - std::floor(h);
     float p = v * (1.0f - s), q = v * (1.0f - s * f), t = v * (1.0f - s * (1.0f - f));
     switch (sector) {
-        case 0: return V3(v, t, p);
-        case 1: return V3(q, v, p);
-        case 2: return V3(p, v, t);
-        case 3: return V3(p, q, v);
-        case 4: return V3(t, p, v);
-        default: return V3(v, p, q);
+        case 0:
+            return V3(v, t, p);
+        case 1:
+            return V3(q, v, p);
+        case 2:
+            return V3(p, v, t);
+        case 3:
+            return V3(p, q, v);
+        case 4:
+            return V3(t, p, v);
+        default:
+            return V3(v, p, q);
     }
 }
 
@@ -121,15 +130,20 @@ enum class Conversion { ToRgb, FromRgb };
 // Converts between "rgb" and the named space; false for an unknown space name.
 bool ConvertRgb(const std::string& space, Conversion direction, const V3& in, V3* out) {
     const bool toRgb = direction == Conversion::ToRgb;
-    if (space == "rgb") *out = in;
-    else if (space == "hsv") *out = toRgb ? RgbFromHsv(in) : HsvFromRgb(in);
-    else if (space == "hsl") *out = toRgb ? RgbFromHsl(in) : HslFromRgb(in);
+    if (space == "rgb")
+        *out = in;
+    else if (space == "hsv")
+        *out = toRgb ? RgbFromHsv(in) : HsvFromRgb(in);
+    else if (space == "hsl")
+        *out = toRgb ? RgbFromHsl(in) : HslFromRgb(in);
     else if (space == "xyz" || space == "XYZ")
         *out = Apply(toRgb ? kXyzFromRgbRows.inverse() : kXyzFromRgbRows, in);
-    else if (space == "xyY") *out = toRgb ? RgbFromXyy(in) : XyyFromRgb(in);
+    else if (space == "xyY")
+        *out = toRgb ? RgbFromXyy(in) : XyyFromRgb(in);
     else if (space == "YIQ")
         *out = Apply(toRgb ? kYiqFromRgbRows.inverse() : kYiqFromRgbRows, in);
-    else return false;
+    else
+        return false;
     return true;
 }
 
@@ -144,13 +158,12 @@ void CtransformKernel(const BuiltinCall& call) {
     bool known = ConvertRgb(from, Conversion::ToRgb, V3(0.0f), &probe) &&
                  ConvertRgb(to, Conversion::FromRgb, V3(0.0f), &probe);
     if (call.context && !known) {
-        call.context->RuntimeWarning("ctransform:" + from + ":" + to,
-                                     "ctransform: unknown colour space \"" + from + "\" or \"" +
-                                         to + "\"");
+        call.context->RuntimeWarning(
+            "ctransform:" + from + ":" + to,
+            "ctransform: unknown colour space \"" + from + "\" or \"" + to + "\"");
     }
     if (call.context && known && w != 3) {
-        call.context->RuntimeWarning("ctransform:ncomps",
-                                     "ctransform needs 3-component colours");
+        call.context->RuntimeWarning("ctransform:ncomps", "ctransform needs 3-component colours");
     }
     ForEachPoint(call, [&](int p) {
         if (!known || w != 3) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "shaderlang/runtime/builtins_util.h"
+#include "shaderlang/runtime/globals_view.h"
 #include "shaderlang/shading_context.h"
 
 namespace gonio::sl::builtins {
@@ -71,12 +72,15 @@ void RotateKernel(const BuiltinCall& call) {
 
 // ---- shading geometry ----------------------------------------------------------------------
 
-// faceforward(N, I, Nref): N flipped, if need be, to point against I as seen from Nref. The
-// two-argument form (Nref = Ng) is lowered by the compiler to this one.
+// faceforward(N, I [, Nref]): N flipped, if need be, to point against I as seen from Nref
+// (the global Ng when Nref is absent).
 void FaceforwardKernel(const BuiltinCall& call) {
+    const FloatArg nrefArg = call.argCount >= 3 ? call.args[2]
+                             : call.globals     ? call.globals->Get("Ng")
+                                                : FloatArg{};
     ForEachPoint(call, [&](int p) {
         V3 n = Triple(call.args[0], p), i = Triple(call.args[1], p);
-        V3 nref = Triple(call.args[2], p);
+        V3 nref = nrefArg.data ? Triple(nrefArg, p) : n;
         SetTriple(call.result, p, Dot(-i, nref) < 0.0f ? -n : n);
     });
 }
@@ -98,9 +102,9 @@ void ReflectKernel(const BuiltinCall& call) {
 
 void RefractKernel(const BuiltinCall& call) {
     ForEachPoint(call, [&](int p) {
-        SetTriple(call.result, p,
-                  Refract(Triple(call.args[0], p), Triple(call.args[1], p),
-                          Float(call.args[2], p)));
+        SetTriple(
+            call.result, p,
+            Refract(Triple(call.args[0], p), Triple(call.args[1], p), Float(call.args[2], p)));
     });
 }
 
@@ -156,10 +160,16 @@ enum class TransformRule { Point, Vector, Normal };
 V3 ApplyTransform(const M44& m, const V3& x, TransformRule rule) {
     V3 out;
     switch (rule) {
-        case TransformRule::Point: m.multVecMatrix(x, out); break;
-        case TransformRule::Vector: m.multDirMatrix(x, out); break;
+        case TransformRule::Point:
+            m.multVecMatrix(x, out);
+            break;
+        case TransformRule::Vector:
+            m.multDirMatrix(x, out);
+            break;
         // Normals go by the inverse transpose so they stay perpendicular to surfaces.
-        case TransformRule::Normal: m.inverse().transposed().multDirMatrix(x, out); break;
+        case TransformRule::Normal:
+            m.inverse().transposed().multDirMatrix(x, out);
+            break;
     }
     return out;
 }
@@ -214,7 +224,8 @@ void TransformKernel(const BuiltinCall& call) {
 }
 
 void AddTransformRows(BuiltinList* list, const char* name, const char* t, BuiltinKernel kernel) {
-    for (const char* prefix : {"s", "ss", "m", "sm"}) list->Add(name, t, prefix + std::string(t), kernel);
+    for (const char* prefix : {"s", "ss", "m", "sm"})
+        list->Add(name, t, prefix + std::string(t), kernel);
 }
 
 }  // namespace
@@ -235,8 +246,11 @@ void AddGeometricBuiltins(BuiltinList* list) {
     list->Add("normalize", "v", "p", NormalizeKernel);
     list->Add("distance", "f", "pp", DistanceKernel);
     list->Add("ptlined", "f", "ppp", PtlinedKernel);
-    for (const char* t : kPointLikeCodes) list->Add("rotate", t, std::string(t) + "fpp", RotateKernel);
+    for (const char* t : kPointLikeCodes)
+        list->Add("rotate", t, std::string(t) + "fpp", RotateKernel);
 
+    list->Add("faceforward", "n", "nv", FaceforwardKernel, kReadsGlobals);
+    list->Add("faceforward", "v", "vv", FaceforwardKernel, kReadsGlobals);
     list->Add("faceforward", "n", "nvn", FaceforwardKernel);
     list->Add("faceforward", "v", "vvv", FaceforwardKernel);
     list->Add("reflect", "v", "vn", ReflectKernel);

@@ -9,11 +9,12 @@
 // the conformance references were rendered by Aqsis, and the spec leaves it to the renderer
 // (its example uses 1/roughness, Pixie 10/roughness).
 
+#include "shaderlang/runtime/builtins_lighting.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "shaderlang/runtime/builtins_lighting.h"
 #include "shaderlang/runtime/builtins_util.h"
 #include "shaderlang/shading_context.h"
 
@@ -39,7 +40,8 @@ void ClearResult(const BuiltinCall& call, int p) {
 // Adds weight · Cl of `light` at point p to the result.
 void AccumulateCl(const BuiltinCall& call, const LightResult& light, int p, float weight) {
     const int n = call.n;
-    for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) += weight * light.Cl[c * n + p];
+    for (int c = 0; c < call.result.width; ++c)
+        call.result.At(c, p) += weight * light.Cl[c * n + p];
 }
 
 // Sums weight(light, p, Ln) · Cl over the lights that reach each point within 90° of N.
@@ -90,7 +92,8 @@ void SpecularBrdfKernel(const BuiltinCall& call) {
     });
 }
 
-// phong(N, V, size) = Σ Cl · max(0, R · normalize(L))^size, R = reflect(-normalize(V), normalize(N)).
+// phong(N, V, size) = Σ Cl · max(0, R · normalize(L))^size, R = reflect(-normalize(V),
+// normalize(N)).
 void PhongKernel(const BuiltinCall& call) {
     SumOverLights(call, call.args[0], [&](int p, const V3& ln, const V3& normal) {
         V3 n = Normalized(normal);
@@ -110,7 +113,8 @@ void TraceKernel(const BuiltinCall& call) {
             directions[c * n + p] = call.args[1].At(c, p);
         }
     }
-    if (call.context) call.context->Trace(origins.data(), directions.data(), call.active, colour.data());
+    if (call.context)
+        call.context->Trace(origins.data(), directions.data(), call.active, colour.data());
     ForEachPoint(call, [&](int p) {
         for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = colour[c * n + p];
     });

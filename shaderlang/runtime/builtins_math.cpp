@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "shaderlang/runtime/builtins_derivatives.h"
 #include "shaderlang/runtime/builtins_util.h"
 #include "shaderlang/shading_context.h"
 
@@ -107,8 +108,8 @@ float Smoothstep(float lo, float hi, float x) {
 
 void SmoothstepKernel(const BuiltinCall& call) {
     ForEachPoint(call, [&](int p) {
-        call.result.At(0, p) = Smoothstep(Float(call.args[0], p), Float(call.args[1], p),
-                                          Float(call.args[2], p));
+        call.result.At(0, p) =
+            Smoothstep(Float(call.args[0], p), Float(call.args[1], p), Float(call.args[2], p));
     });
 }
 
@@ -121,17 +122,9 @@ float BoxFilteredStep(float edge, float x, float w) {
     return std::clamp((x + 0.5f * w - edge) / w, 0.0f, 1.0f);
 }
 
-// The change of a varying float across one grid step along u and v, from the neighbours the
-// context names (the opposite neighbour at a grid edge, 0 where there is none).
-float NeighbourExtent(const FloatArg& s, int p, const int* neighbours) {
-    if (!neighbours || !s.varying) return 0.0f;
-    int q = neighbours[p];
-    return q >= 0 ? std::fabs(s.At(0, q) - s.At(0, p)) : 0.0f;
-}
-
 // filterstep(edge, s1 [, s2] [, "width", w ...]): the step from edge, box-filtered over the
-// footprint of s (the interval [s1, s2] when s2 is given, else s's change over one grid step,
-// from the context's neighbours). "width"/"swidth" scale the footprint; "filter" is accepted,
+// footprint of s (the interval [s1, s2] when s2 is given, else |Δu s| + |Δv s|, s's change
+// over one grid step along u and v). "width"/"swidth" scale the footprint; "filter" is accepted,
 // but every filter is evaluated as a box (documented in docs/shading-language.md).
 void FilterstepKernel(const BuiltinCall& call) {
     int next = 2;
@@ -141,13 +134,11 @@ void FilterstepKernel(const BuiltinCall& call) {
     for (int a = next; a + 1 < call.argCount; a += 2) {
         if (call.argTypes[a].base != BaseType::String || !call.strings[a].data) continue;
         const std::string& name = call.strings[a].data[0];
-        if ((name == "width" || name == "swidth") &&
-            call.argTypes[a + 1].base == BaseType::Float) {
+        if ((name == "width" || name == "swidth") && call.argTypes[a + 1].base == BaseType::Float) {
             widthScale = Float(call.args[a + 1], 0);
         }
     }
-    const int* uNeighbours = call.context ? call.context->UNeighbours() : nullptr;
-    const int* vNeighbours = call.context ? call.context->VNeighbours() : nullptr;
+    const Stencil su = UStencil(call), sv = VStencil(call);
     ForEachPoint(call, [&](int p) {
         float edge = Float(call.args[0], p);
         float s1 = Float(call.args[1], p);
@@ -157,8 +148,7 @@ void FilterstepKernel(const BuiltinCall& call) {
             x = 0.5f * (s1 + s2);
             w = std::fabs(s2 - s1);
         } else {
-            w = NeighbourExtent(call.args[1], p, uNeighbours) +
-                NeighbourExtent(call.args[1], p, vNeighbours);
+            w = std::fabs(Delta(su, call.args[1], 0, p)) + std::fabs(Delta(sv, call.args[1], 0, p));
         }
         call.result.At(0, p) = BoxFilteredStep(edge, x, w * widthScale);
     });
@@ -173,24 +163,27 @@ struct SplineBasis {
     int step;
 };
 
-const SplineBasis kCatmullRom = {
-    {{-0.5f, 1.5f, -1.5f, 0.5f}, {1.0f, -2.5f, 2.0f, -0.5f}, {-0.5f, 0.0f, 0.5f, 0.0f},
-     {0.0f, 1.0f, 0.0f, 0.0f}},
-    1};
-const SplineBasis kBezier = {
-    {{-1.0f, 3.0f, -3.0f, 1.0f}, {3.0f, -6.0f, 3.0f, 0.0f}, {-3.0f, 3.0f, 0.0f, 0.0f},
-     {1.0f, 0.0f, 0.0f, 0.0f}},
-    3};
+const SplineBasis kCatmullRom = {{{-0.5f, 1.5f, -1.5f, 0.5f},
+                                  {1.0f, -2.5f, 2.0f, -0.5f},
+                                  {-0.5f, 0.0f, 0.5f, 0.0f},
+                                  {0.0f, 1.0f, 0.0f, 0.0f}},
+                                 1};
+const SplineBasis kBezier = {{{-1.0f, 3.0f, -3.0f, 1.0f},
+                              {3.0f, -6.0f, 3.0f, 0.0f},
+                              {-3.0f, 3.0f, 0.0f, 0.0f},
+                              {1.0f, 0.0f, 0.0f, 0.0f}},
+                             3};
 const SplineBasis kBSpline = {{{-1.0f / 6, 3.0f / 6, -3.0f / 6, 1.0f / 6},
                                {3.0f / 6, -6.0f / 6, 3.0f / 6, 0.0f},
                                {-3.0f / 6, 0.0f, 3.0f / 6, 0.0f},
                                {1.0f / 6, 4.0f / 6, 1.0f / 6, 0.0f}},
                               1};
 // Hermite knots come in (point, tangent) pairs: P0 T0 P1 T1.
-const SplineBasis kHermite = {
-    {{2.0f, 1.0f, -2.0f, 1.0f}, {-3.0f, -2.0f, 3.0f, -1.0f}, {0.0f, 1.0f, 0.0f, 0.0f},
-     {1.0f, 0.0f, 0.0f, 0.0f}},
-    2};
+const SplineBasis kHermite = {{{2.0f, 1.0f, -2.0f, 1.0f},
+                               {-3.0f, -2.0f, 3.0f, -1.0f},
+                               {0.0f, 1.0f, 0.0f, 0.0f},
+                               {1.0f, 0.0f, 0.0f, 0.0f}},
+                              2};
 
 const SplineBasis* FindBasis(const std::string& name) {
     if (name == "catmull-rom") return &kCatmullRom;
@@ -241,9 +234,9 @@ void SplineKernel(const BuiltinCall& call) {
             basis = FindBasis(name);
             if (!basis) {
                 if (call.context) {
-                    call.context->RuntimeWarning("spline:" + name,
-                                                 "spline: unknown basis \"" + name +
-                                                     "\", using catmull-rom");
+                    call.context->RuntimeWarning(
+                        "spline:" + name,
+                        "spline: unknown basis \"" + name + "\", using catmull-rom");
                 }
                 basis = &kCatmullRom;
             }
@@ -252,8 +245,7 @@ void SplineKernel(const BuiltinCall& call) {
     const int w = call.result.width;
     const int firstKnot = xIndex + 1;
     const bool fromArray = call.argTypes[firstKnot].IsArray();
-    const int count =
-        fromArray ? call.argTypes[firstKnot].arrayLength : call.argCount - firstKnot;
+    const int count = fromArray ? call.argTypes[firstKnot].arrayLength : call.argCount - firstKnot;
     ForEachPoint(call, [&](int p) {
         float x = Float(call.args[xIndex], p);
         for (int c = 0; c < w; ++c) {

@@ -31,7 +31,8 @@ void SetCompKernel(const BuiltinCall& call) {
 }
 
 void DeterminantKernel(const BuiltinCall& call) {
-    ForEachPoint(call, [&](int p) { call.result.At(0, p) = Matrix(call.args[0], p).determinant(); });
+    ForEachPoint(call,
+                 [&](int p) { call.result.At(0, p) = Matrix(call.args[0], p).determinant(); });
 }
 
 // With row vectors, "first T, then m" is T·m.

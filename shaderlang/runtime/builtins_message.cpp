@@ -19,9 +19,12 @@ bool Query(const BuiltinCall& call, int p, std::vector<float>* floats, std::stri
     const std::string& name = call.strings[0].data[0];
     const TypeSpec& type = call.argTypes[1];
     switch (Source) {
-        case InfoSource::Attribute: return call.context->Attribute(name, type, p, floats, text);
-        case InfoSource::Option: return call.context->Option(name, type, floats, text);
-        default: return call.context->RendererInfo(name, type, floats, text);
+        case InfoSource::Attribute:
+            return call.context->Attribute(name, type, p, floats, text);
+        case InfoSource::Option:
+            return call.context->Option(name, type, floats, text);
+        default:
+            return call.context->RendererInfo(name, type, floats, text);
     }
 }
 

@@ -51,8 +51,10 @@ std::string FormatArgument(const BuiltinCall& call, int a, int p, const std::str
         case 'd':
         case 'i':
         case 'e':
-        case 'g': return FormatValues(call, a, p, spec, conversion);
-        default: return FormatValues(call, a, p, spec, 'f');  // f, p, c, m, s of a number
+        case 'g':
+            return FormatValues(call, a, p, spec, conversion);
+        default:
+            return FormatValues(call, a, p, spec, 'f');  // f, p, c, m, s of a number
     }
 }
 
@@ -67,8 +69,8 @@ std::string FormatAt(const BuiltinCall& call, int p) {
             continue;
         }
         size_t j = i + 1;
-        while (j < format.size() && std::string("-+ #0123456789.").find(format[j]) !=
-                                        std::string::npos) {
+        while (j < format.size() &&
+               std::string("-+ #0123456789.").find(format[j]) != std::string::npos) {
             ++j;
         }
         if (j >= format.size()) {

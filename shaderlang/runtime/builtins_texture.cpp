@@ -1,19 +1,22 @@
 // Texture built-ins (RISpec §15.7): texture, environment, shadow, through ShadingContext (the
 // renderer uses OpenImageIO's TextureSystem).
 //
-// The name may select a first channel as RSL's name[chan] does: "wood.tx[1]". The coordinates
+// RSL's name[chan] selects the first channel (the compiler turns it into a trailing
+// ("firstchannel", chan) option). The coordinates
 // are the numeric arguments after the name: texture takes (s, t) or the four corners
-// (s1, t1, ..., s4, t4); the compiler supplies the globals s and t for texture("name").
+// (s1, t1, ..., s4, t4); texture("name") reads the globals s and t.
 // environment takes D or D1..D4, shadow P or P1..P4 (four are averaged). Then come optional
 // ("name", value) pairs: "width"/"swidth"/"twidth" scale the filter footprint, "blur"/"sblur"/
 // "tblur" widen it by a fraction of the texture; "filter", "fill", "samples" and "bias" are
 // accepted and left to the renderer's defaults.
 
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <vector>
 
+#include "shaderlang/runtime/builtins_derivatives.h"
 #include "shaderlang/runtime/builtins_util.h"
+#include "shaderlang/runtime/globals_view.h"
 #include "shaderlang/shading_context.h"
 
 namespace gonio::sl::builtins {
@@ -25,17 +28,15 @@ struct TextureName {
     int firstChannel = 0;
 };
 
-// Splits "file[k]" into the file and the first channel k.
-TextureName ParseTextureName(const std::string& name) {
-    TextureName out{name, 0};
-    size_t open = name.rfind('[');
-    if (!name.empty() && name.back() == ']' && open != std::string::npos) {
-        std::string index = name.substr(open + 1, name.size() - open - 2);
-        char* end = nullptr;
-        long k = std::strtol(index.c_str(), &end, 10);
-        if (!index.empty() && end && *end == '\0' && k >= 0) {
-            out.file = name.substr(0, open);
-            out.firstChannel = static_cast<int>(k);
+// The file name and the first channel, which the compiler passes as a trailing
+// ("firstchannel", k) option for RSL's name[k] syntax.
+TextureName ReadTextureName(const BuiltinCall& call) {
+    TextureName out{call.strings[0].data[0], 0};
+    for (int a = 1; a + 1 < call.argCount; ++a) {
+        if (call.argTypes[a].base == BaseType::String && call.strings[a].data &&
+            call.strings[a].data[0] == "firstchannel" &&
+            call.argTypes[a + 1].base == BaseType::Float) {
+            out.firstChannel = std::max(0, static_cast<int>(Float(call.args[a + 1], 0)));
         }
     }
     return out;
@@ -59,30 +60,38 @@ TextureOptions ParseOptions(const BuiltinCall& call, int first) {
         if (call.argTypes[a + 1].base != BaseType::Float) continue;
         const std::string& name = call.strings[a].data[0];
         float v = Float(call.args[a + 1], 0);
-        if (name == "width") o.swidth = o.twidth = v;
-        else if (name == "swidth") o.swidth = v;
-        else if (name == "twidth") o.twidth = v;
-        else if (name == "blur") o.sblur = o.tblur = v;
-        else if (name == "sblur") o.sblur = v;
-        else if (name == "tblur") o.tblur = v;
+        if (name == "width")
+            o.swidth = o.twidth = v;
+        else if (name == "swidth")
+            o.swidth = v;
+        else if (name == "twidth")
+            o.twidth = v;
+        else if (name == "blur")
+            o.sblur = o.tblur = v;
+        else if (name == "sblur")
+            o.sblur = v;
+        else if (name == "tblur")
+            o.tblur = v;
     }
     return o;
 }
 
-// Copies component c of argument a into a plane of n floats (uniform arguments broadcast).
+// Copies component c of a value into a plane of n floats (uniform values broadcast).
+void Plane(const BuiltinCall& call, const FloatArg& value, int c, std::vector<float>* out) {
+    out->assign(call.n, 0.0f);
+    if (!value.data) return;
+    for (int p = 0; p < call.n; ++p) (*out)[p] = value.At(c, p);
+}
 void Plane(const BuiltinCall& call, int a, int c, std::vector<float>* out) {
-    out->resize(call.n);
-    for (int p = 0; p < call.n; ++p) (*out)[p] = call.args[a].At(c, p);
+    Plane(call, call.args[a], c, out);
 }
 
-// Differences of a plane across each point's grid neighbour (0 where there is none).
-std::vector<float> NeighbourDifference(const std::vector<float>& v, const int* neighbours) {
-    std::vector<float> d(v.size(), 0.0f);
-    if (!neighbours) return d;
-    for (size_t p = 0; p < v.size(); ++p) {
-        int q = neighbours[p];
-        if (q >= 0) d[p] = v[q] - v[p];
-    }
+// Differences of a plane across one grid step (batch neighbours, derivatives.h).
+std::vector<float> StepDifference(const BuiltinCall& call, const std::vector<float>& v,
+                                  const Stencil& stencil) {
+    FloatArg plane{const_cast<float*>(v.data()), 1, true, call.n};
+    std::vector<float> d(v.size());
+    for (int p = 0; p < call.n; ++p) d[p] = Delta(stencil, plane, 0, p);
     return d;
 }
 
@@ -99,7 +108,7 @@ void CopyOut(const BuiltinCall& call, const std::vector<float>& out) {
 
 void TextureKernel(const BuiltinCall& call) {
     const int n = call.n, w = call.result.width;
-    const TextureName name = ParseTextureName(call.strings[0].data[0]);
+    const TextureName name = ReadTextureName(call);
     const int coords = CoordinateArgCount(call);
     const TextureOptions options = ParseOptions(call, 1 + coords);
     std::vector<float> s, t, dsdx, dtdx, dsdy, dtdy;
@@ -116,22 +125,27 @@ void TextureKernel(const BuiltinCall& call) {
             dsdx[p] = s2[p] - s[p], dtdx[p] = t2[p] - t[p];
             dsdy[p] = s3[p] - s[p], dtdy[p] = t3[p] - t[p];
         }
-    } else if (coords >= 2) {
-        Plane(call, 1, 0, &s);
-        Plane(call, 2, 0, &t);
-        const int* un = call.context ? call.context->UNeighbours() : nullptr;
-        const int* vn = call.context ? call.context->VNeighbours() : nullptr;
-        dsdx = NeighbourDifference(s, un), dtdx = NeighbourDifference(t, un);
-        dsdy = NeighbourDifference(s, vn), dtdy = NeighbourDifference(t, vn);
     } else {
-        if (call.context) {
-            call.context->RuntimeWarning("texture:coordinates",
-                                         "texture() needs coordinates (s, t)");
+        if (coords >= 2) {
+            Plane(call, 1, 0, &s);
+            Plane(call, 2, 0, &t);
+        } else {  // texture("name"): the globals s and t
+            if (!call.globals || !call.globals->Get("s").data) {
+                if (call.context) {
+                    call.context->RuntimeWarning("texture:coordinates",
+                                                 "texture() has no s and t to look up");
+                }
+            }
+            if (call.globals) {
+                Plane(call, call.globals->Get("s"), 0, &s);
+                Plane(call, call.globals->Get("t"), 0, &t);
+            } else {
+                s.assign(n, 0.0f), t.assign(n, 0.0f);
+            }
         }
-        ForEachPoint(call, [&](int p) {
-            for (int c = 0; c < w; ++c) call.result.At(c, p) = 0.0f;
-        });
-        return;
+        const Stencil su = UStencil(call), sv = VStencil(call);
+        dsdx = StepDifference(call, s, su), dtdx = StepDifference(call, t, su);
+        dsdy = StepDifference(call, s, sv), dtdy = StepDifference(call, t, sv);
     }
     for (int p = 0; p < n; ++p) {
         dsdx[p] = dsdx[p] * options.swidth + std::copysign(options.sblur, dsdx[p]);
@@ -162,7 +176,7 @@ std::vector<float> MeanTriple(const BuiltinCall& call, int count) {
 
 void EnvironmentKernel(const BuiltinCall& call) {
     const int n = call.n, w = call.result.width;
-    const TextureName name = ParseTextureName(call.strings[0].data[0]);
+    const TextureName name = ReadTextureName(call);
     const int coords = CoordinateArgCount(call);
     std::vector<float> directions = MeanTriple(call, coords >= 4 ? 4 : 1);
     std::vector<float> out(static_cast<size_t>(w) * n, 0.0f);
@@ -175,7 +189,7 @@ void EnvironmentKernel(const BuiltinCall& call) {
 
 void ShadowKernel(const BuiltinCall& call) {
     const int n = call.n;
-    const TextureName name = ParseTextureName(call.strings[0].data[0]);
+    const TextureName name = ReadTextureName(call);
     const int coords = CoordinateArgCount(call);
     std::vector<float> points = MeanTriple(call, coords >= 4 ? 4 : 1);
     std::vector<float> out(n, 0.0f);
@@ -190,7 +204,7 @@ void ShadowKernel(const BuiltinCall& call) {
 }  // namespace
 
 void AddTextureBuiltins(BuiltinList* list) {
-    const unsigned flags = kVaryingResult | kNeedsDerivatives;
+    const unsigned flags = kVaryingResult | kNeedsDerivatives | kReadsGlobals;
     list->Add("texture", "f", "s*", TextureKernel, flags);
     list->Add("texture", "c", "s*", TextureKernel, flags);
     list->Add("environment", "f", "s*", EnvironmentKernel, kVaryingResult);

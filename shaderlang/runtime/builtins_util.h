@@ -74,16 +74,15 @@ inline V3 Normalized(const V3& v) {
 // Rows of the built-in table. Signature strings are interned so generated overloads (min with
 // 2..8 arguments, spline with 4..14 values) keep stable `const char*`s for the table's lifetime.
 class BuiltinList {
-public:
-    void Add(const std::string& name, const std::string& returnType,
-             const std::string& arguments, BuiltinKernel kernel, unsigned flags = kBuiltinNone) {
-        rows.push_back(
-            {Intern(name), Intern(returnType), Intern(arguments), kernel, flags});
+  public:
+    void Add(const std::string& name, const std::string& returnType, const std::string& arguments,
+             BuiltinKernel kernel, unsigned flags = kBuiltinNone) {
+        rows.push_back({Intern(name), Intern(returnType), Intern(arguments), kernel, flags});
     }
 
     std::vector<BuiltinInfo> rows;
 
-private:
+  private:
     const char* Intern(const std::string& s) {
         arena_.push_back(s);
         return arena_.back().c_str();

@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "brdf_grid.h"
-#include "brdf_report.h"
 #include "test_util.h"
 
 namespace gonio {
@@ -33,9 +32,6 @@ TEST(Validation, Lambert1MIsotropic) {
                 100 * stats.meanRelative, 100 * stats.maxRelative, stats.points);
     EXPECT_LT(std::abs(stats.meanRelative), 0.01);
     EXPECT_LT(stats.maxRelative, 0.05);
-    for (double ti : {0.0, 30.0, 60.0, 80.0}) {
-        EXPECT_NEAR(Albedo(grid, DirectionFromAngles(ti * kDeg, 0), 32)[0], 0.5, 0.005);
-    }
 }
 
 TEST(Validation, Phong1MPeakAndWidth) {

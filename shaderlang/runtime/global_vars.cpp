@@ -1,0 +1,55 @@
+#include "shaderlang/runtime/global_vars.h"
+
+namespace gonio::sl {
+
+namespace {
+
+constexpr unsigned kS = 1u << int(ShaderType::Surface);
+constexpr unsigned kL = 1u << int(ShaderType::Light);
+constexpr unsigned kD = 1u << int(ShaderType::Displacement);
+constexpr unsigned kV = 1u << int(ShaderType::Volume);
+constexpr unsigned kI = 1u << int(ShaderType::Imager);
+constexpr unsigned kAll = kS | kL | kD | kV | kI;
+
+// name, type, varying, readers, writers
+const GlobalVarInfo kGlobals[kGlobalCount] = {
+    {"P", BaseType::Point, true, kAll, kD},
+    {"N", BaseType::Normal, true, kS | kL | kD, kS | kD},
+    {"Ng", BaseType::Normal, true, kS | kL | kD, 0},
+    {"I", BaseType::Vector, true, kS | kD | kV, 0},
+    {"E", BaseType::Point, false, kAll, 0},
+    {"dPdu", BaseType::Vector, true, kS | kL | kD, 0},
+    {"dPdv", BaseType::Vector, true, kS | kL | kD, 0},
+    {"dPdtime", BaseType::Vector, true, kS | kD, 0},
+    {"u", BaseType::Float, true, kS | kL | kD, 0},
+    {"v", BaseType::Float, true, kS | kL | kD, 0},
+    {"du", BaseType::Float, true, kS | kL | kD, 0},
+    {"dv", BaseType::Float, true, kS | kL | kD, 0},
+    {"s", BaseType::Float, true, kS | kL | kD, 0},
+    {"t", BaseType::Float, true, kS | kL | kD, 0},
+    {"Cs", BaseType::Color, true, kS, 0},
+    {"Os", BaseType::Color, true, kS, 0},
+    {"Ci", BaseType::Color, true, kS | kV | kI, kS | kV | kI},
+    {"Oi", BaseType::Color, true, kS | kV | kI, kS | kV | kI},
+    {"L", BaseType::Vector, true, kS | kL, kL},
+    {"Cl", BaseType::Color, true, kS | kL, kL},
+    {"Ol", BaseType::Color, true, kS | kL, kL},
+    {"Ps", BaseType::Point, true, kL, 0},
+    {"ncomps", BaseType::Float, false, kAll, 0},
+    {"time", BaseType::Float, false, kAll, 0},
+    {"dtime", BaseType::Float, false, kAll, 0},
+    {"alpha", BaseType::Float, false, kI, 0},
+};
+
+}  // namespace
+
+const GlobalVarInfo& GlobalVar(int id) { return kGlobals[id]; }
+
+int FindGlobal(const std::string& name, ShaderType type) {
+    for (int i = 0; i < kGlobalCount; ++i) {
+        if (name == kGlobals[i].name && (kGlobals[i].readers & ShaderBit(type))) return i;
+    }
+    return -1;
+}
+
+}  // namespace gonio::sl

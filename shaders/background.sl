@@ -1,0 +1,7 @@
+/* background: fills what the scene leaves uncovered with a colour. */
+imager background(color background = 1)
+{
+    Ci += (1 - alpha) * background;
+    Oi = 1;
+    alpha = 1;
+}

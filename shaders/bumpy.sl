@@ -1,0 +1,11 @@
+/* bumpy: moves the surface along its normal by Km times a texture's value. A ray tracer does
+   not move the geometry: only the shading normal changes (bump mapping). RISpec's parameter
+   table calls the scale "amplitude" while its listing says Km; both are accepted. */
+displacement bumpy(float Km = 1, amplitude = 1; string texturename = "")
+{
+    if (texturename != "") {
+        float height = Km * amplitude * float texture(texturename);
+        P += height * normalize(N);
+        N = calculatenormal(P);
+    }
+}

@@ -1,0 +1,6 @@
+/* constant: the surface colour, unlit. */
+surface constant()
+{
+    Oi = Os;
+    Ci = Os * Cs;
+}

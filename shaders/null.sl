@@ -1,0 +1,4 @@
+/* null: does nothing (RISpec: every shader type has a null shader). */
+surface null()
+{
+}
