@@ -43,8 +43,8 @@ void Frame(const Imath::V3d& n, Imath::V3d* t, Imath::V3d* b) {
 }  // namespace
 
 AnalyticBrdf AnalyticBrdf::Parse(const std::string& spelling) {
-    const std::string usage = "expected lambert:ALBEDO or phong:KD,KS,EXPONENT, got '" +
-                              spelling + "'";
+    const std::string usage =
+        "expected lambert:ALBEDO or phong:KD,KS,EXPONENT, got '" + spelling + "'";
     const auto colon = spelling.find(':');
     if (colon == std::string::npos) throw std::invalid_argument(usage);
     const std::string name = spelling.substr(0, colon);

@@ -10,7 +10,7 @@
 namespace gonio {
 
 class AnalyticBrdf {
-public:
+  public:
     // Throws std::invalid_argument with the expected spelling on a bad model string.
     static AnalyticBrdf Parse(const std::string& spelling);
 
@@ -29,7 +29,7 @@ public:
     Imath::V3d Sample(const Imath::V3d& wIn, double u1, double u2, double u3, double* pdf) const;
     double Pdf(const Imath::V3d& wIn, const Imath::V3d& wOut) const;
 
-private:
+  private:
     std::string spelling_;
     double kd_ = 0.0, ks_ = 0.0, exponent_ = 1.0;
 };

@@ -36,11 +36,13 @@ Rgb Colour(ColourMap map, float t) {
         {0.207f, 0.372f, 0.553f}, {0.164f, 0.471f, 0.558f}, {0.128f, 0.567f, 0.551f},
         {0.135f, 0.659f, 0.518f}, {0.267f, 0.749f, 0.441f}, {0.478f, 0.821f, 0.318f},
         {0.741f, 0.873f, 0.150f}, {0.993f, 0.906f, 0.144f}};
-    static const std::vector<Rgb> heat = {
-        {0, 0, 0}, {0.5f, 0, 0}, {1, 0.2f, 0}, {1, 0.7f, 0}, {1, 1, 0.4f}, {1, 1, 1}};
+    static const std::vector<Rgb> heat = {{0, 0, 0},    {0.5f, 0, 0}, {1, 0.2f, 0},
+                                          {1, 0.7f, 0}, {1, 1, 0.4f}, {1, 1, 1}};
     switch (map) {
-        case ColourMap::kViridis: return Lerp(viridis, t);
-        case ColourMap::kHeat: return Lerp(heat, t);
+        case ColourMap::kViridis:
+            return Lerp(viridis, t);
+        case ColourMap::kHeat:
+            return Lerp(heat, t);
         default: {
             const float g = std::clamp(t, 0.0f, 1.0f);
             return {g, g, g};
@@ -86,8 +88,8 @@ AngularMapResult WriteAngularMap(const Brdf& brdf, const AngularMapOptions& opti
                     p[c] = static_cast<float>(f[n == 3 ? c : 0] * options.energyScale);
                 }
             } else {
-                const Rgb c = Colour(options.colourMap,
-                                     static_cast<float>(f[0] * options.energyScale));
+                const Rgb c =
+                    Colour(options.colourMap, static_cast<float>(f[0] * options.energyScale));
                 std::copy(c.begin(), c.end(), p);
             }
         }
@@ -108,8 +110,8 @@ AngularMapResult WriteAngularMap(const Brdf& brdf, const AngularMapOptions& opti
     spec.attribute("ImageDescription", "gonio brdf map: theta_light " +
                                            std::to_string(options.thetaLight) + " phi_light " +
                                            std::to_string(options.phiLight));
-    if (!out->open(temp, spec) ||
-        !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {
+    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
+        !out->close()) {
         std::remove(temp.c_str());
         throw std::runtime_error(path + ": cannot write the map: " + out->geterror());
     }

@@ -1,7 +1,5 @@
 #include "baked_table.h"
 
-#include "splat_set.h"
-
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -9,6 +7,8 @@
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
+
+#include "splat_set.h"
 
 namespace gonio {
 
@@ -19,16 +19,17 @@ constexpr float kPi = 3.14159265358979323846f;
 double ThetaNode(int i, int n) { return 0.5 * 3.14159265358979323846 * i / (n - 1); }
 double PhiNode(int j, int n) { return 2 * 3.14159265358979323846 * j / n; }
 
-// atan2 to about 1e-5 radians (a minimax polynomial for atan on [0, 1]): ample for interpolating between nodes a few degrees apart,
-// at a fraction of the library call's cost.
+// atan2 to about 1e-5 radians (a minimax polynomial for atan on [0, 1]): ample for interpolating
+// between nodes a few degrees apart, at a fraction of the library call's cost.
 float FastAtan2(float y, float x) {
     const float ax = std::abs(x), ay = std::abs(y);
     const float lo = std::min(ax, ay), hi = std::max(ax, ay);
     if (hi == 0.0f) return 0.0f;
     const float a = lo / hi, s = a * a;
-    float r = a * (0.99997726f +
-                    s * (-0.33262347f +
-                         s * (0.19354346f + s * (-0.11643287f + s * (0.05265332f - s * 0.0117212f)))));
+    float r =
+        a * (0.99997726f +
+             s * (-0.33262347f +
+                  s * (0.19354346f + s * (-0.11643287f + s * (0.05265332f - s * 0.0117212f)))));
     if (ay > ax) r = 0.5f * kPi - r;
     if (x < 0) r = kPi - r;
     return y < 0 ? -r : r;

@@ -12,7 +12,7 @@
 namespace gonio {
 
 class BakedTable : public Brdf {
-public:
+  public:
     // Samples `source` with `resolution` θ nodes and 2·resolution φ nodes per hemisphere.
     BakedTable(const Brdf& source, int resolution, const ProgressFn& progress = {});
     // From stored values (.grd): dims = {θ_in, φ_in, θ_out, φ_out} node counts (φ_in = 1 when
@@ -27,7 +27,7 @@ public:
     const std::array<int, 4>& Dims() const { return dims_; }
     const std::vector<float>& Values() const { return values_; }
 
-private:
+  private:
     std::size_t Index(int ti, int pi, int to, int po) const {
         return ((static_cast<std::size_t>(ti) * dims_[1] + pi) * dims_[2] + to) * dims_[3] + po;
     }

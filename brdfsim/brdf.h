@@ -11,7 +11,7 @@
 namespace gonio {
 
 class Brdf {
-public:
+  public:
     virtual ~Brdf() = default;
     virtual int NumComponents() const = 0;
     virtual bool IsIsotropic() const = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gonio {
@@ -18,8 +19,13 @@ std::uint32_t Entry(std::size_t k, int image) {
     return static_cast<std::uint32_t>(k) | (static_cast<std::uint32_t>(image) << kImageShift);
 }
 
-void CheckSize(const SplatSet& splats) {
+void CheckSize(const SplatSet& splats, std::size_t cells) {
     if (splats.Size() > kSplatMask) throw std::invalid_argument("too many photons for a grid");
+    // Offsets and build counters cost about 20 bytes a cell.
+    if (cells > (std::size_t(1) << 24)) {
+        throw std::invalid_argument("grid too fine: " + std::to_string(cells) +
+                                    " cells (at most 16.7M); use fewer rings or rects");
+    }
 }
 
 template <typename Lists>
@@ -38,8 +44,8 @@ GridStats ComputeGridStats(const CellLists& lists, std::size_t photons) {
     GridStats stats;
     stats.cells = lists.NumCells();
     for (std::size_t c = 0; c < stats.cells; ++c) {
-        stats.maxSplats = std::max<std::size_t>(stats.maxSplats,
-                                                lists.offsets[c + 1] - lists.offsets[c]);
+        stats.maxSplats =
+            std::max<std::size_t>(stats.maxSplats, lists.offsets[c + 1] - lists.offsets[c]);
     }
     stats.averageSplats = stats.cells ? static_cast<double>(lists.entries.size()) / stats.cells : 0;
     stats.ratio = photons ? stats.averageSplats / photons : 0.0;
@@ -50,7 +56,7 @@ BrdfGrid::BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
                    const ProgressFn& progress)
     : splats_(std::move(splats)), grid_(rings, rects) {
     if (splats_->Params().isotropic) throw std::invalid_argument("BrdfGrid needs a 4D splat set");
-    CheckSize(*splats_);
+    CheckSize(*splats_, static_cast<std::size_t>(grid_.NumCells()) * grid_.NumCells());
     const SplatSet& s = *splats_;
     const double radius = SlackRadius(s.Params().radius);
     const std::size_t numOut = grid_.NumCells();
@@ -104,7 +110,7 @@ BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int 
     if (!splats_->Params().isotropic) {
         throw std::invalid_argument("BrdfIsoGrid needs an isotropic splat set");
     }
-    CheckSize(*splats_);
+    CheckSize(*splats_, static_cast<std::size_t>(rings) * grid_.NumCells());
     const SplatSet& s = *splats_;
     const double radius = SlackRadius(s.Params().radius);
     const double width = 0.5 * kPi / rings;

@@ -23,7 +23,7 @@ struct GridStats {
 GridStats ComputeGridStats(const CellLists& lists, std::size_t photons);
 
 class BrdfGrid : public Brdf {
-public:
+  public:
     BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
              const ProgressFn& progress = {});
     // From stored lists (.grd).
@@ -40,7 +40,7 @@ public:
     int Rects() const { return grid_.MaxRects(); }
     GridStats Stats() const { return ComputeGridStats(lists_, splats_->Size()); }
 
-private:
+  private:
     std::shared_ptr<const SplatSet> splats_;
     HemisphereGrid grid_;  // the same subdivision on both hemispheres (thesis C.3.2)
     CellLists lists_;
@@ -49,7 +49,7 @@ private:
 // Isotropic: θ_in split into `rings` ranges, each holding an outgoing hemisphere (θ_out, Δφ)
 // subdivided as in BrdfGrid (GPIBRDFOpt: rects does not apply to the incoming side).
 class BrdfIsoGrid : public Brdf {
-public:
+  public:
     BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
                 const ProgressFn& progress = {});
     BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects, CellLists lists);
@@ -65,7 +65,7 @@ public:
     int Rects() const { return grid_.MaxRects(); }
     GridStats Stats() const { return ComputeGridStats(lists_, splats_->Size()); }
 
-private:
+  private:
     int RangeOf(float theta) const;
 
     std::shared_ptr<const SplatSet> splats_;

@@ -45,9 +45,9 @@ void PrintPhotonMapInfo(const std::string& path, const PhotonMapSummary& s, std:
                  static_cast<unsigned long long>(s.paths),
                  s.paths ? 100.0 * s.photons / s.paths : 0.0);
     std::fprintf(out, "components      %d\n", s.ncomps);
-    std::fprintf(out, "kind            %s\n",
-                 s.allPhiInZero ? "isotropic (phi_in = 0: use brdf iopt)"
-                                : "anisotropic (use brdf opt)");
+    std::fprintf(
+        out, "kind            %s\n",
+        s.allPhiInZero ? "isotropic (phi_in = 0: use brdf iopt)" : "anisotropic (use brdf opt)");
     if (s.photons) {
         std::fprintf(out, "theta_in range  %.2f .. %.2f deg\n", s.thetaInMin / kDeg,
                      s.thetaInMax / kDeg);
@@ -105,25 +105,24 @@ double ReciprocityError(const Brdf& brdf, int pairs) {
 void PrintGrdInfo(const std::string& path, const GrdFile& file, std::FILE* out) {
     const SplatSet& s = *file.splats;
     std::fprintf(out, "grid            %s\n", path.c_str());
-    std::fprintf(out, "kind            %s\n",
-                 file.IsIsotropic() ? "isotropic (theta_in x (theta_out, dphi))"
-                                    : "anisotropic (4D)");
+    std::fprintf(
+        out, "kind            %s\n",
+        file.IsIsotropic() ? "isotropic (theta_in x (theta_out, dphi))" : "anisotropic (4D)");
     std::fprintf(out, "photons         %llu splats of %llu photons, %llu traced paths\n",
                  static_cast<unsigned long long>(s.Size()),
                  static_cast<unsigned long long>(s.photons),
                  static_cast<unsigned long long>(s.paths));
-    std::fprintf(out, "splat radius    %.4f rad (%.2f deg), norm %s, horizon %s\n",
-                 s.params.radius, s.params.radius / kDeg, NormName(s.params.norm),
-                 HorizonName(s.params.horizon));
+    std::fprintf(out, "splat radius    %.4f rad (%.2f deg), norm %s, horizon %s\n", s.params.radius,
+                 s.params.radius / kDeg, NormName(s.params.norm), HorizonName(s.params.horizon));
     std::fprintf(out, "energy_min      %g\n", s.params.energyMin);
     std::fprintf(out, "kernel mass     %.6g (on the sphere)\n", s.mass);
     const GridStats stats = ComputeGridStats(file.Lists(), s.Size());
-    std::fprintf(out, "subdivision     %d rings, %d rects max: %zu cells\n", file.rings,
-                 file.rects, stats.cells);
+    std::fprintf(out, "subdivision     %d rings, %d rects max: %zu cells\n", file.rings, file.rects,
+                 stats.cells);
     std::fprintf(out, "splats per cell average %.1f, max %zu, ratio %.4f (thesis Table 4.1)\n",
                  stats.averageSplats, stats.maxSplats, stats.ratio);
-    std::fprintf(out, "memory          splats %.1f MB, cell lists %.1f MB",
-                 SplatSetBytes(s) / 1e6, file.Lists().Bytes() / 1e6);
+    std::fprintf(out, "memory          splats %.1f MB, cell lists %.1f MB", SplatSetBytes(s) / 1e6,
+                 file.Lists().Bytes() / 1e6);
     if (file.baked) {
         const auto& d = file.baked->Dims();
         std::fprintf(out, ", baked table %dx%dx%dx%d %.1f MB", d[0], d[1], d[2], d[3],

@@ -10,7 +10,7 @@
 namespace gonio {
 
 class BrdfSimple : public Brdf {
-public:
+  public:
     explicit BrdfSimple(std::shared_ptr<const SplatSet> splats) : splats_(std::move(splats)) {}
 
     int NumComponents() const override { return splats_->NumComponents(); }
@@ -18,7 +18,7 @@ public:
     void Eval(const Imath::V3f& wIn, const Imath::V3f& wOut, float* f) const override;
     std::size_t MemoryBytes() const override;
 
-private:
+  private:
     std::shared_ptr<const SplatSet> splats_;
 };
 

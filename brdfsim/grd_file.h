@@ -14,13 +14,13 @@ namespace gonio {
 
 // The file is not a .grd, or is truncated or corrupt: bad input data.
 class GrdError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 // The file cannot be opened, read or written.
 class GrdIoError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -19,8 +19,8 @@ HemisphereGrid::HemisphereGrid(int bands, int maxRects)
     firstCell_.push_back(0);
     for (int b = 1; b <= bands; ++b) {
         // thesis eq. 4.14
-        const int rects = std::max(
-            static_cast<int>(std::lround(std::sin(0.5 * kPi * b / bands) * maxRects)), 1);
+        const int rects =
+            std::max(static_cast<int>(std::lround(std::sin(0.5 * kPi * b / bands) * maxRects)), 1);
         firstCell_.push_back(firstCell_.back() + rects);
         bandOfCell_.insert(bandOfCell_.end(), rects, b - 1);
     }

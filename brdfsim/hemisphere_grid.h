@@ -11,7 +11,7 @@
 namespace gonio {
 
 class HemisphereGrid {
-public:
+  public:
     HemisphereGrid() = default;
     HemisphereGrid(int bands, int maxRects);
 
@@ -25,7 +25,7 @@ public:
     // Minimum great-circle distance from the point (θc, φc) to the cell.
     double DistanceToCell(int cell, double thetaC, double phiC) const;
 
-private:
+  private:
     friend class CellFinder;
     void ComputeBoundingCap(int cell);
     double DistanceToCell(int cell, double thetaC, double phiC, double sinC, double cosC) const;
@@ -42,13 +42,13 @@ private:
 
 // Finds the cells a splat of a given radius reaches.
 class CellFinder {
-public:
+  public:
     CellFinder(const HemisphereGrid& grid, double radius);
     // Appends (cell, minimum great-circle distance) for every cell closer than the radius to the
     // point `centre` (unit; may lie below the horizon, as mirror images do).
     void Near(const Imath::V3d& centre, std::vector<std::pair<int, double>>& cells) const;
 
-private:
+  private:
     const HemisphereGrid& grid_;
     double radius_;
     std::vector<double> cosReach_;  // per cell: cos(radius + bounding radius), or -2

@@ -72,9 +72,12 @@ double Integrate(double lo, double hi, int panels, const std::function<double(do
 // Largest b with norm(a, b) <= R: the kernel is smooth inside, so the inner integral stops there.
 double SupportLimit(Norm norm, double radius, double a) {
     switch (norm) {
-        case Norm::kL1: return radius - a;
-        case Norm::kL2: return std::sqrt(std::max(0.0, radius * radius - a * a));
-        case Norm::kLinf: return radius;
+        case Norm::kL1:
+            return radius - a;
+        case Norm::kL2:
+            return std::sqrt(std::max(0.0, radius * radius - a * a));
+        case Norm::kLinf:
+            return radius;
     }
     return radius;
 }
@@ -138,7 +141,7 @@ void CheckRadius(double radius) {
 
 // Table of in-domain masses over (cIn, cOut) in [0, π/2]², bilinearly interpolated.
 class InDomainTable {
-public:
+  public:
     static constexpr int kSize = 49;
     static constexpr int kPanels = 4;
 
@@ -161,7 +164,7 @@ public:
                fu * ((1 - fv) * at(i + 1, j) + fv * at(i + 1, j + 1));
     }
 
-private:
+  private:
     static double Node(int i) { return 0.5 * kPi * i / (kSize - 1); }
 
     static double Compute(double radius, Norm norm, bool isotropic, double cIn, double cOut) {
@@ -171,7 +174,7 @@ private:
             return KernelDoubleIntegral(norm, radius, 0.0, radius, wa, wb, kPanels);
         }
         // θ_in offset t keeps the splat inside when cIn + t lies in [0, π/2]; split at the ends.
-        const double below = std::min(radius, cIn);           // offsets -t, t in [0, below]
+        const double below = std::min(radius, cIn);            // offsets -t, t in [0, below]
         const double above = std::min(radius, kPi / 2 - cIn);  // offsets +t, t in [0, above]
         auto one = [](double) { return 1.0; };
         return KernelDoubleIntegral(norm, radius, 0.0, below, one, wb, kPanels) +
@@ -187,9 +190,12 @@ Norm ParseNorm(const std::string& text) { return ParseNormOrThrow(text); }
 
 const char* NormName(Norm norm) {
     switch (norm) {
-        case Norm::kL1: return "l1";
-        case Norm::kL2: return "l2";
-        case Norm::kLinf: return "linf";
+        case Norm::kL1:
+            return "l1";
+        case Norm::kL2:
+            return "l2";
+        case Norm::kLinf:
+            return "linf";
     }
     return "?";
 }

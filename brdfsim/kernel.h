@@ -39,9 +39,12 @@ inline float SplatKernelSquared(float x2) {
 // Thesis eqs. 3.4-3.6: the distance in the product domain from the two partial distances.
 inline double CombineDistances(Norm norm, double dIn, double dOut) {
     switch (norm) {
-        case Norm::kL1: return dIn + dOut;
-        case Norm::kL2: return std::sqrt(dIn * dIn + dOut * dOut);
-        case Norm::kLinf: return dIn > dOut ? dIn : dOut;
+        case Norm::kL1:
+            return dIn + dOut;
+        case Norm::kL2:
+            return std::sqrt(dIn * dIn + dOut * dOut);
+        case Norm::kLinf:
+            return dIn > dOut ? dIn : dOut;
     }
     return 0.0;
 }

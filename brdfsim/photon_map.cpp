@@ -26,8 +26,8 @@ int ParseNumbers(const char*& p, const char* end, float* out, int capacity) {
         if (p >= end || *p == '\n') return n;
         float value;
         const auto result = std::from_chars(p, end, value);
-        if (result.ec != std::errc() || (result.ptr < end && !IsBlank(*result.ptr) &&
-                                         *result.ptr != '\n')) {
+        if (result.ec != std::errc() ||
+            (result.ptr < end && !IsBlank(*result.ptr) && *result.ptr != '\n')) {
             return -1;
         }
         if (n < capacity) out[n] = value;
@@ -122,8 +122,7 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
                 continue;
             }
             if (n < 0) {
-                throw PhotonMapError(path_ + ":" + std::to_string(line) +
-                                     ": expected numbers");
+                throw PhotonMapError(path_ + ":" + std::to_string(line) + ": expected numbers");
             }
             if (n < kFirstColour + 1) {
                 throw PhotonMapError(path_ + ":" + std::to_string(line) +
@@ -240,8 +239,7 @@ PhotonMapHeader ReadPhotonMapHeader(const std::string& path) {
     return PhotonMapReader(path).Header();
 }
 
-PhotonMapWriter::PhotonMapWriter(const std::string& path, const PhotonMapHeader& header,
-                                 int ncomps)
+PhotonMapWriter::PhotonMapWriter(const std::string& path, const PhotonMapHeader& header, int ncomps)
     : path_(path),
       tempPath_(path + ".tmp." + std::to_string(::getpid())),
       header_(header),

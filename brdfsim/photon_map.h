@@ -15,13 +15,13 @@ namespace gonio {
 
 // A malformed photon map; what() reads "file:line: expected ..." where a line is known.
 class PhotonMapError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 // An I/O failure (missing file, unwritable folder): a usage error, not bad data.
 class PhotonMapIoError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -47,7 +47,7 @@ struct PhotonMap {
 // Streams a photon map in batches, parsing with std::from_chars on both cores, so a map larger
 // than memory can be processed and a loaded map is held only once.
 class PhotonMapReader {
-public:
+  public:
     explicit PhotonMapReader(const std::string& path);  // reads and checks the header
     ~PhotonMapReader();
     PhotonMapReader(const PhotonMapReader&) = delete;
@@ -60,7 +60,7 @@ public:
     // (after checking that the photon count matches the header).
     bool ReadBatch(std::size_t maxPhotons, std::vector<float>& rows);
 
-private:
+  private:
     struct Piece;
     void ParsePieces(const char* begin, const char* end, std::vector<float>& rows);
     std::uint64_t ParseHeaderLine(const std::string& line);
@@ -82,7 +82,7 @@ PhotonMapHeader ReadPhotonMapHeader(const std::string& path);
 // Writes a photon map under a temporary name and renames it on Close(); a writer destroyed
 // without Close() (an error on the way) removes the temporary file, so no half file remains.
 class PhotonMapWriter {
-public:
+  public:
     PhotonMapWriter(const std::string& path, const PhotonMapHeader& header, int ncomps);
     ~PhotonMapWriter();
     PhotonMapWriter(const PhotonMapWriter&) = delete;
@@ -91,7 +91,7 @@ public:
     void Append(const float* row);
     void Close();
 
-private:
+  private:
     std::string path_, tempPath_;
     std::FILE* file_ = nullptr;
     PhotonMapHeader header_;

@@ -30,10 +30,14 @@ SectionAxis ParseSectionAxis(const std::string& text) {
 
 const char* SectionAxisName(SectionAxis axis) {
     switch (axis) {
-        case SectionAxis::kThetaIn: return "theta-in";
-        case SectionAxis::kPhiIn: return "phi-in";
-        case SectionAxis::kThetaOut: return "theta-out";
-        case SectionAxis::kPhiOut: return "phi-out";
+        case SectionAxis::kThetaIn:
+            return "theta-in";
+        case SectionAxis::kPhiIn:
+            return "phi-in";
+        case SectionAxis::kThetaOut:
+            return "theta-out";
+        case SectionAxis::kPhiOut:
+            return "phi-out";
     }
     return "?";
 }
@@ -59,9 +63,15 @@ std::string SectionCut::Label() const {
 
 void DefaultRange(SectionAxis axis, double* from, double* to) {
     switch (axis) {
-        case SectionAxis::kThetaOut: *from = -89, *to = 89; break;
-        case SectionAxis::kThetaIn: *from = 0, *to = 89; break;
-        default: *from = 0, *to = 360; break;
+        case SectionAxis::kThetaOut:
+            *from = -89, *to = 89;
+            break;
+        case SectionAxis::kThetaIn:
+            *from = 0, *to = 89;
+            break;
+        default:
+            *from = 0, *to = 360;
+            break;
     }
 }
 
@@ -69,10 +79,18 @@ void CutAngles(const SectionCut& cut, double x, double* thetaIn, double* phiIn, 
                double* phiOut) {
     double ti = cut.thetaIn, pi = cut.phiIn, to = cut.thetaOut, po = cut.phiOut;
     switch (cut.vary) {
-        case SectionAxis::kThetaIn: ti = x; break;
-        case SectionAxis::kPhiIn: pi = x; break;
-        case SectionAxis::kThetaOut: to = x; break;
-        case SectionAxis::kPhiOut: po = x; break;
+        case SectionAxis::kThetaIn:
+            ti = x;
+            break;
+        case SectionAxis::kPhiIn:
+            pi = x;
+            break;
+        case SectionAxis::kThetaOut:
+            to = x;
+            break;
+        case SectionAxis::kPhiOut:
+            po = x;
+            break;
     }
     Fold(ti, pi, thetaIn, phiIn);
     Fold(to, po, thetaOut, phiOut);

@@ -31,15 +31,15 @@ struct SectionCut {
 void DefaultRange(SectionAxis axis, double* from, double* to);
 
 struct Section {
-    std::vector<double> x;                // the varying angle, degrees
-    std::vector<std::vector<float>> f;    // per sample, NumComponents() values (1/sr)
+    std::vector<double> x;              // the varying angle, degrees
+    std::vector<std::vector<float>> f;  // per sample, NumComponents() values (1/sr)
 };
 
 // Samples evaluated on both cores.
 Section ComputeSection(const Brdf& brdf, const SectionCut& cut);
 
 // The four angles (radians) of sample x of the cut, with negative θ folded to φ + π.
-void CutAngles(const SectionCut& cut, double x, double* thetaIn, double* phiIn,
-               double* thetaOut, double* phiOut);
+void CutAngles(const SectionCut& cut, double x, double* thetaIn, double* phiIn, double* thetaOut,
+               double* phiOut);
 
 }  // namespace gonio

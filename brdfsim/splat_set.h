@@ -37,7 +37,7 @@ struct SplatGeometry {
 };
 
 class SplatSet {
-public:
+  public:
     SplatSet() = default;
     SplatSet(const PhotonMap& map, const SplatParams& params);
 
@@ -114,9 +114,15 @@ inline void SplatSet::Accumulate(std::size_t k, int v, const SplatQuery& q, doub
     const float dOut = GreatCircleFromChord2(chordOut2) * invRadius;
     float k2;
     switch (params.norm) {
-        case Norm::kL1: k2 = (dIn + dOut) * (dIn + dOut); break;
-        case Norm::kL2: k2 = dIn * dIn + dOut * dOut; break;
-        default: k2 = dIn > dOut ? dIn * dIn : dOut * dOut; break;
+        case Norm::kL1:
+            k2 = (dIn + dOut) * (dIn + dOut);
+            break;
+        case Norm::kL2:
+            k2 = dIn * dIn + dOut * dOut;
+            break;
+        default:
+            k2 = dIn > dOut ? dIn * dIn : dOut * dOut;
+            break;
     }
     const float kernel = SplatKernelSquared(k2);
     if (kernel <= 0.0f) return;

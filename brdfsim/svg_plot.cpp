@@ -13,18 +13,22 @@ namespace gonio {
 
 namespace {
 
-constexpr double kWidth = 720, kHeight = 450;
-constexpr double kLeft = 80, kRight = 200, kTop = 40, kBottom = 60;
+constexpr double kWidth = 800, kHeight = 450;
+constexpr double kLeft = 80, kRight = 280, kTop = 40, kBottom = 60;
 const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                 "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
 std::string Escape(const std::string& text) {
     std::string out;
     for (char c : text) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
+        if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '&')
+            out += "&amp;";
+        else
+            out += c;
     }
     return out;
 }

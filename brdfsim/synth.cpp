@@ -24,7 +24,7 @@ double ToUnit(std::uint64_t bits) { return (bits >> 11) * (1.0 / 900719925474099
 
 // The numbers for photon i depend only on (seed, i): the same map whatever the thread count.
 class PhotonRandom {
-public:
+  public:
     explicit PhotonRandom(const SynthOptions& options) : options_(options) {
         double phi = 2.0;  // φ_d solves x^(d+1) = x + 1 (Roberts 2018)
         for (int i = 0; i < 50; ++i) phi = std::pow(1.0 + phi, 1.0 / (kDims + 1));
@@ -50,7 +50,7 @@ public:
         return u;
     }
 
-private:
+  private:
     const SynthOptions& options_;
     std::array<double, kDims> alpha_, shift_;
 };

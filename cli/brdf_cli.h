@@ -3,7 +3,6 @@
 // argument, a progress line, and loading a BRDF from a .grd or a .pm.
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <memory>
 #include <string>
@@ -20,7 +19,7 @@ int RunGuarded(const std::string& name, const std::function<void()>& body);
 
 // A usage error raised after parsing (a bad option value).
 class UsageError : public std::invalid_argument {
-public:
+  public:
     using std::invalid_argument::invalid_argument;
 };
 
@@ -29,12 +28,12 @@ double ParseSpread(const std::string& text);
 
 // "\rLABEL: 42%" on stderr, updated at each whole percent, ended by Finish().
 class ProgressLine {
-public:
+  public:
     explicit ProgressLine(std::string label) : label_(std::move(label)) {}
     void operator()(double fraction);
     void Finish();
 
-private:
+  private:
     std::string label_;
     int shown_ = -1;
 };
@@ -50,7 +49,7 @@ struct PhotonMapSettings {
     double energyMin = 0.0;
     Norm norm = Norm::kL2;
     Horizon horizon = Horizon::kReflect;
-    int isotropic = -1;  // -1: decide from the map (all φ_in = 0 means isotropic)
+    int isotropic = -1;   // -1: decide from the map (all φ_in = 0 means isotropic)
     bool simple = false;  // BrdfSimple instead of a grid (sectslow)
 };
 

@@ -18,7 +18,7 @@ namespace brdfcli {
 
 int RunGuarded(const std::string& name, const std::function<void()>& body) {
     auto fail = [&](const std::exception& e, int code) {
-        std::fprintf(stderr, "\ngonio brdf %s: error: %s\n", name.c_str(), e.what());
+        std::fprintf(stderr, "gonio brdf %s: error: %s\n", name.c_str(), e.what());
         return code;
     };
     try {
@@ -50,8 +50,10 @@ double ParseSpread(const std::string& text) {
         used = 0;
     }
     if (used == 0 || used != number.size() || !(value > 0)) {
-        throw UsageError("SPREAD must be a positive radius in radians (0.3) or degrees (17deg), "
-                         "got '" + text + "'");
+        throw UsageError(
+            "SPREAD must be a positive radius in radians (0.3) or degrees (17deg), "
+            "got '" +
+            text + "'");
     }
     return degrees ? value * 3.14159265358979323846 / 180.0 : value;
 }
@@ -134,7 +136,8 @@ LoadedBrdf LoadBrdf(const std::string& path, const PhotonMapSettings& settings, 
 
 void AddBrdfCommand(CLI::App& app, int* exitCode) {
     CLI::App* brdf = app.add_subcommand(
-        "brdf", "BRDFs from photon maps: synth, merge, opt, iopt, eval, info, section, sectslow, map");
+        "brdf",
+        "BRDFs from photon maps: synth, merge, opt, iopt, eval, info, section, sectslow, map");
     brdf->require_subcommand(1);
     brdfcli::AddMakeCommands(*brdf, exitCode);
     brdfcli::AddViewCommands(*brdf, exitCode);

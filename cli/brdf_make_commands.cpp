@@ -116,7 +116,8 @@ void RunOpt(const OptArgs& args, bool isotropic) {
     std::unique_ptr<Brdf> grid;
     const CellLists* lists;
     if (isotropic) {
-        auto iso = std::make_unique<BrdfIsoGrid>(splats, args.rings, args.rects, std::ref(progress));
+        auto iso =
+            std::make_unique<BrdfIsoGrid>(splats, args.rings, args.rects, std::ref(progress));
         lists = &iso->Lists();
         grid = std::move(iso);
     } else {
@@ -135,12 +136,12 @@ void RunOpt(const OptArgs& args, bool isotropic) {
     const GridStats stats = ComputeGridStats(*lists, splats->Size());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %zu splats (%s, R = %.4f rad, %s), %zu cells, %.1f splats per cell "
-                "(ratio %.4f), %.1f MB, %.2f s\n",
-                args.output.c_str(), splats->Size(), isotropic ? "isotropic" : "anisotropic",
-                params.radius, NormName(params.norm), stats.cells, stats.averageSplats,
-                stats.ratio, (grid->MemoryBytes() + (baked ? baked->MemoryBytes() : 0)) / 1e6,
-                seconds);
+    std::printf(
+        "%s: %zu splats (%s, R = %.4f rad, %s), %zu cells, %.1f splats per cell "
+        "(ratio %.4f), %.1f MB, %.2f s\n",
+        args.output.c_str(), splats->Size(), isotropic ? "isotropic" : "anisotropic", params.radius,
+        NormName(params.norm), stats.cells, stats.averageSplats, stats.ratio,
+        (grid->MemoryBytes() + (baked ? baked->MemoryBytes() : 0)) / 1e6, seconds);
 }
 
 void AddOpt(CLI::App& brdf, int* exitCode, bool isotropic) {
@@ -161,9 +162,7 @@ void AddOpt(CLI::App& brdf, int* exitCode, bool isotropic) {
     AddNormOption(cmd, &args->norm, &args->horizon);
     cmd->add_option("--bake", args->bake, "also store a baked table with RES θ nodes")
         ->check(CLI::Range(0, 256));
-    cmd->callback([=] {
-        *exitCode = RunGuarded(name, [&] { RunOpt(*args, isotropic); });
-    });
+    cmd->callback([=] { *exitCode = RunGuarded(name, [&] { RunOpt(*args, isotropic); }); });
 }
 
 }  // namespace

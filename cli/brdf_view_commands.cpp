@@ -18,7 +18,8 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 bool EndsWith(const std::string& text, const std::string& end) {
-    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+    return text.size() >= end.size() &&
+           text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
 void AddEval(CLI::App& brdf, int* exitCode) {
@@ -121,8 +122,7 @@ void RunSections(const std::vector<std::pair<std::string, const Brdf*>>& sources
     std::string header = "# " + std::string(SectionAxisName(cuts[0].vary)) + "_deg";
     for (const auto& [name, brdf] : sources) {
         if (args.component < 0 || args.component >= brdf->NumComponents()) {
-            throw UsageError("--component must be below " +
-                             std::to_string(brdf->NumComponents()));
+            throw UsageError("--component must be below " + std::to_string(brdf->NumComponents()));
         }
         for (const SectionCut& cut : cuts) {
             const Section section = ComputeSection(*brdf, cut);
@@ -133,7 +133,8 @@ void RunSections(const std::vector<std::pair<std::string, const Brdf*>>& sources
             series.push_back(s);
             columns.push_back(section.f);
             for (int c = 0; c < brdf->NumComponents(); ++c) {
-                header += "  [" + s.label + "]" + (brdf->NumComponents() > 1 ? ":" + std::to_string(c) : "");
+                header += "  [" + s.label + "]" +
+                          (brdf->NumComponents() > 1 ? ":" + std::to_string(c) : "");
             }
         }
     }
@@ -145,13 +146,14 @@ void RunSections(const std::vector<std::pair<std::string, const Brdf*>>& sources
             s.dashed = true;
             std::vector<std::vector<float>> column;
             for (int i = 0; i < cut.samples; ++i) {
-                const double x = cut.samples == 1 ? cut.from
-                                                  : cut.from + (cut.to - cut.from) * i /
-                                                                   (cut.samples - 1);
+                const double x = cut.samples == 1
+                                     ? cut.from
+                                     : cut.from + (cut.to - cut.from) * i / (cut.samples - 1);
                 double ti, pi, to, po;
                 CutAngles(cut, x, &ti, &pi, &to, &po);
                 const Imath::V3f a = DirectionFromAngles(ti, pi), b = DirectionFromAngles(to, po);
-                const double f = analytic.Eval(Imath::V3d(a.x, a.y, a.z), Imath::V3d(b.x, b.y, b.z));
+                const double f =
+                    analytic.Eval(Imath::V3d(a.x, a.y, a.z), Imath::V3d(b.x, b.y, b.z));
                 s.x.push_back(x);
                 s.y.push_back(f);
                 column.push_back({static_cast<float>(f)});

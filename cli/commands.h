@@ -10,5 +10,7 @@ namespace gonio {
 void AddRenderCommand(CLI::App& app, int* exitCode);
 void AddCatribCommand(CLI::App& app, int* exitCode);
 void AddBrdfCommand(CLI::App& app, int* exitCode);
+void AddShaderCommand(CLI::App& app, int* exitCode);
+void AddShadeCommand(CLI::App& app, int* exitCode);
 
 }  // namespace gonio

@@ -9,6 +9,8 @@ int main(int argc, char** argv) {
     gonio::AddRenderCommand(app, &exitCode);
     gonio::AddCatribCommand(app, &exitCode);
     gonio::AddBrdfCommand(app, &exitCode);
+    gonio::AddShaderCommand(app, &exitCode);
+    gonio::AddShadeCommand(app, &exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

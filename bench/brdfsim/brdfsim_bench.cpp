@@ -2,13 +2,13 @@
 // BrdfSimple, BrdfGrid / BrdfIsoGrid and the baked table on 300k-photon maps of splat radius 0.5
 // (the thesis's brushed-metal case), with the memory of each representation as counters.
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <map>
 #include <memory>
 #include <random>
 #include <string>
-#include <unistd.h>
 
 #include "baked_table.h"
 #include "brdf_grid.h"
@@ -89,8 +89,8 @@ const Representations& Case(bool isotropic) {
     SplatParams params;
     params.radius = 0.5;
     params.isotropic = isotropic;
-    auto splats = std::make_shared<const SplatSet>(
-        Synthetic("phong:0.5,0.5,10", 300000, isotropic), params);
+    auto splats =
+        std::make_shared<const SplatSet>(Synthetic("phong:0.5,0.5,10", 300000, isotropic), params);
     int rings, rects;
     DefaultGridFor(params.radius, &rings, &rects);
     r.simple = std::make_unique<BrdfSimple>(splats);

@@ -41,6 +41,8 @@ bool ReadBrdfLightOptions(const Frame& frame, Diagnostics& diagnostics, BrdfLigh
             o.area = static_cast<float>(v);
         } else if (name == "isotropic") {
             o.isotropic = v != 0;
+        } else if (name == "averageazimuth") {
+            o.averageAzimuth = v != 0;
         } else if (name == "seed") {
             require(v >= 0, "a non-negative seed");
             o.hasSeed = true;

@@ -15,6 +15,8 @@ struct BrdfLightOptions {
     int64_t rays = 100000;    // photon paths
     float area = 0.1f;        // side of the square sampling area (and of a periodic tile)
     bool isotropic = false;   // φ_in = 0
+    // Isotropic runs: light from every azimuth, stored relative to it (see photon_tracer.h).
+    bool averageAzimuth = false;
     bool hasSeed = false;
     uint64_t seed = 0;
     int maxDepth = 100;  // bounces

@@ -89,6 +89,7 @@ bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagno
     trace.paths = static_cast<uint64_t>(options.rays);
     trace.area = options.area;
     trace.isotropic = options.isotropic;
+    trace.averageAzimuth = options.averageAzimuth;
     trace.seed = options.hasSeed ? options.seed : settings.seed;
     trace.maxDepth = options.maxDepth;
     trace.periodic = options.periodic;

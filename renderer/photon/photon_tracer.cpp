@@ -43,7 +43,7 @@ struct TraceContext {
     int ncomps;
     float half = 0;                // half the tile side
     float cosMin = 1, cosMax = 0;  // of θ_in: cos θmax ≤ cos θ′ ≤ cos θmin
-    float pIn = 0;     // pdf of ω′ per steradian (of the rotation-symmetric law if isotropic)
+    float pIn = 0;                 // pdf of ω′ per steradian of an anisotropic run
     float launch = 0;  // beam origins this far from the sampling area lie outside the bounds
     float zMin = 0, zMax = 0;  // vertical extent of the geometry
     float offset = 0;          // ray origin offset off a surface
@@ -103,10 +103,11 @@ class PathTracer {
 
     void Trace(uint64_t path) {
         PathRandom random(c_.settings.seed, path);
-        // ω′: cos θ′ uniform on [cos θmax, cos θmin], φ′ uniform or 0 (DESIGN.md)
-        const float cosIn = c_.cosMax + (c_.cosMin - c_.cosMax) * (1 - random.Next());
-        const float phiIn = c_.settings.isotropic ? 0.0f : 2 * kPi * random.Next();
-        const float sinIn = std::sqrt(std::max(0.0f, 1 - cosIn * cosIn));
+        float thetaIn, pIn;
+        DrawIncidence(random.Next(), &thetaIn, &pIn);
+        const bool fixedAzimuth = c_.settings.isotropic && !c_.settings.averageAzimuth;
+        const float phiIn = fixedAzimuth ? 0.0f : 2 * kPi * random.Next();
+        const float sinIn = std::sin(thetaIn), cosIn = std::cos(thetaIn);
         const V3f wIn(sinIn * std::cos(phiIn), sinIn * std::sin(phiIn), cosIn);
         const float w = 2 * c_.half;
         const V3f x((random.Next() - 0.5f) * w, (random.Next() - 0.5f) * w, 0);
@@ -129,7 +130,7 @@ class PathTracer {
             org = sp.P + c_.offset * FacingNormal(sp.Ng, wo);
             dir = wo;
             const Segment next = TraceSegment(c_, org, dir, &hit);
-            if (next == Segment::Escaped) return Escape(acosf(std::min(1.0f, cosIn)), phiIn, wo);
+            if (next == Segment::Escaped) return Escape(thetaIn, phiIn, pIn, wo);
             if (next == Segment::Stuck || depth >= c_.settings.maxDepth) {
                 ++out_.stats.bounceLimit;
                 return;
@@ -138,6 +139,23 @@ class PathTracer {
     }
 
   private:
+    // θ′ and p_in, the pdf of ω′ per steradian. Anisotropic runs: cos θ′ uniform (uniform on
+    // the zone of the hemisphere, DESIGN.md). Isotropic runs: θ′ uniform, as brdfsim's synthetic
+    // maps, and p_in that of the rotation-symmetric law, (1/Δθ)/(2π sin θ′): their domain is
+    // θ′ × ω, and a density uniform in θ′ keeps the photons' weights β/p_in bounded at the
+    // pole, where cos θ′ uniform would give them infinite variance.
+    void DrawIncidence(float u, float* theta, float* pIn) const {
+        const float t0 = c_.settings.thetaMin, t1 = c_.settings.thetaMax;
+        if (!c_.settings.isotropic) {
+            const float cosIn = c_.cosMax + (c_.cosMin - c_.cosMax) * (1 - u);
+            *theta = std::acos(std::min(1.0f, cosIn));
+            *pIn = c_.pIn;
+            return;
+        }
+        *theta = t0 + (t1 - t0) * (1 - u);  // in (θmin, θmax]
+        *pIn = 1 / ((t1 - t0) * 2 * kPi * std::max(std::sin(*theta), 1e-7f));
+    }
+
     static V3f FacingNormal(const V3f& n, const V3f& w) { return n.dot(w) < 0 ? -n : n; }
 
     // Samples the micro BRDF at sp for light arriving from wi and multiplies β by f cos/pdf;
@@ -163,16 +181,20 @@ class PathTracer {
         return alive ? wo : V3f(0);
     }
 
-    void Escape(float thetaIn, float phiIn, const V3f& wo) {
+    void Escape(float thetaIn, float phiIn, float pIn, const V3f& wo) {
         if (wo.z <= 0) {
             ++out_.stats.escapedDown;
             return;
         }
         ++out_.stats.escapedUp;
         float phiOut = std::atan2(wo.y, wo.x);
-        if (phiOut < 0) phiOut += 2 * kPi;
+        if (c_.settings.isotropic) {  // relative to the light: the map holds φ_in = 0
+            phiOut -= phiIn;
+            phiIn = 0;
+        }
+        phiOut -= 2 * kPi * std::floor(phiOut / (2 * kPi));
         out_.rows.insert(out_.rows.end(),
-                         {thetaIn, phiIn, std::acos(std::min(1.0f, wo.z)), phiOut, c_.pIn});
+                         {thetaIn, phiIn, std::acos(std::min(1.0f, wo.z)), phiOut, pIn});
         out_.rows.insert(out_.rows.end(), beta_.begin(), beta_.end());
         for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyUp[k] += beta_[k];
     }
@@ -220,8 +242,6 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     c.half = settings.area / 2;
     c.cosMin = std::cos(settings.thetaMin);
     c.cosMax = std::max(0.0f, std::cos(settings.thetaMax));
-    // Isotropic maps record the pdf of the rotation-symmetric law (brdfsim divides by
-    // 2π sin θ′ p_in to get the density of θ′), so both cases store the same number.
     c.pIn = 1 / (2 * kPi * (c.cosMin - c.cosMax));
     c.launch = reach + settings.area + 1;
     c.offset = 1e-5f * std::max(bounds.size().length(), 1e-3f);

@@ -21,6 +21,11 @@ struct PhotonTraceSettings {
     uint64_t paths = 100000;
     float area = 0.1f;
     bool isotropic = false;
+    // For isotropic runs: draw the light's azimuth uniformly and store every photon turned by
+    // −φ′ (φ_in = 0, φ_out relative to the light), which averages a finite, not quite
+    // isotropic patch (a few blades of grass) over all azimuths; without it the light comes
+    // from φ′ = 0 as in the thesis and the map is one azimuth of the patch.
+    bool averageAzimuth = false;
     uint64_t seed = 0;
     int maxDepth = 100;
     bool periodic = false;

@@ -51,6 +51,26 @@ Camera::Camera(const Options& options)
     }
 }
 
+Imath::M44f Camera::ScreenFromCamera() const {
+    if (!perspective_) return Imath::M44f();
+    // x' = x / (z tan(fov/2)), y' likewise, z' = (z - near) far / (z (far - near)).
+    const float f = std::isfinite(farClip_) ? farClip_ : 1e30f, n = nearClip_;
+    const float k = 1 / tanHalfFov_;
+    return Imath::M44f(k, 0, 0, 0, 0, k, 0, 0, 0, 0, f / (f - n), 1, 0, 0, -f * n / (f - n), 0);
+}
+
+Imath::M44f Camera::NdcFromScreen() const {
+    const float l = screen_[0], r = screen_[1], b = screen_[2], t = screen_[3];
+    return Imath::M44f(1 / (r - l), 0, 0, 0, 0, -1 / (t - b), 0, 0, 0, 0, 1, 0, -l / (r - l),
+                       t / (t - b), 0, 1);
+}
+
+Imath::M44f Camera::RasterFromNdc() const {
+    Imath::M44f m;
+    m.setScale(Imath::V3f(float(xres_), float(yres_), 1));
+    return m;
+}
+
 CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float lensV) const {
     const float sx = screen_[0] + rasterX / xres_ * (screen_[1] - screen_[0]);
     const float sy = screen_[3] - rasterY / yres_ * (screen_[3] - screen_[2]);

@@ -25,6 +25,11 @@ class Camera {
     CameraRay GenerateRay(float rasterX, float rasterY, float lensU, float lensV) const;
 
     const Imath::M44f& WorldFromCamera() const { return worldFromCamera_; }
+    // RISpec's screen space from camera space (projective for perspective), and raster and NDC
+    // from screen, as row-vector matrices: the shading language's "screen", "NDC", "raster".
+    Imath::M44f ScreenFromCamera() const;
+    Imath::M44f NdcFromScreen() const;
+    Imath::M44f RasterFromNdc() const;
     // The screen window actually used (explicit, or derived from the frame aspect ratio).
     const float* ScreenWindow() const { return screen_; }
 

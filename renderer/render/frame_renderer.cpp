@@ -203,7 +203,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     Progress progress("render", uint64_t(width) * height, settings.progress);
     std::atomic<uint64_t> raysTraced{0};
     const std::unique_ptr<SurfaceShading> shading =
-        MakeDefaultSurfaceShading(options.colorComponents);
+        MakeShaderShading(frame, scene, camera, diagnostics);
     tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
         [&] { return shading->MakeWorker(); });
     tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;

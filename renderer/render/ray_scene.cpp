@@ -536,6 +536,7 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     sp.N = flip * Normalized(TransformNormal(objectFromWorld, object.N));
     sp.u = object.geometry.u, sp.v = object.geometry.v;
 
+    sp.worldFromObject = worldFromObject;
     sp.record = record;
     sp.primID = hit.primID;
     sp.hitU = hit.u, sp.hitV = hit.v;

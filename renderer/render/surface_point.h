@@ -3,6 +3,7 @@
 // interpolated standard primitive variables, plus the shape so that the shading language can
 // fetch any user primitive variable by name.
 
+#include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>
 
 #include <vector>
@@ -19,6 +20,7 @@ struct SurfacePoint {
     float u = 0, v = 0, s = 0, t = 0;
     std::vector<float> Cs, Os;  // ncomps values each
     const SceneShape* shape = nullptr;
+    Imath::M44f worldFromObject;  // including an object instance's placement
 
     // Where the hit lies, so that RayScene::InterpolatePrimVar can fetch any primitive variable.
     const GeometryRecord* record = nullptr;

@@ -16,6 +16,16 @@ std::string HandleKey(const RtHandle& handle) {
     return (handle.isString ? "s:" : "i:") + handle.text;
 }
 
+bool LightCastsShadows(const Attributes& attributes) {
+    auto it = attributes.user.find("light");
+    if (it == attributes.user.end()) return false;
+    for (const Param& p : it->second) {
+        const bool isShadows = p.token == "uniform string shadows";
+        if (isShadows && !p.strings.empty()) return p.strings[0] == "on";
+    }
+    return false;
+}
+
 }  // namespace
 
 bool SceneBuilder::SkipMotionSample() {
@@ -68,6 +78,7 @@ void SceneBuilder::LightSource(const std::string& name, const RtHandle& handle,
     SceneLight light;
     SetShader(&light.light.shader, name, params, loc);
     light.light.handle = handle;
+    light.castsShadows = LightCastsShadows(state_->attributes);
     if (state_->inWorld)
         AddLight(std::move(light));
     else

@@ -47,7 +47,9 @@ struct ObjectInstanceUse {
 
 struct SceneLight {
     LightInstance light;
-    bool onByDefault = true;
+    // Attribute "light" "shadows" "on" when the light was declared: shadows are traced. Off by
+    // default, as in BMRT and Aqsis (RenderMan lights cast no shadows unless asked to).
+    bool castsShadows = false;
 };
 
 struct Frame {

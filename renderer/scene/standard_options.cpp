@@ -37,6 +37,7 @@ constexpr StandardParam kStandardParams[] = {
     {true, "BRDFLight", "periodic", "uniform integer"},
     {true, "BRDFLight", "thetamin", "uniform float"},
     {true, "BRDFLight", "thetamax", "uniform float"},
+    {true, "BRDFLight", "averageazimuth", "uniform integer"},
     {false, "identifier", "name", "uniform string"},
     {false, "light", "shadows", "uniform string"},
     {false, "displacementbound", "sphere", "uniform float"},

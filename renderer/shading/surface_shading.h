@@ -39,3 +39,16 @@ class SurfaceShading {
 std::unique_ptr<SurfaceShading> MakeDefaultSurfaceShading(int colorComponents);
 
 }  // namespace gonio
+
+namespace gonio {
+
+class RayScene;
+class Camera;
+class Diagnostics;
+
+// Shading by the frame's shading-language shaders (Surface, Displacement, Atmosphere and the
+// light shaders); attribute states without a Surface use the default surface.
+std::unique_ptr<SurfaceShading> MakeShaderShading(const Frame& frame, const RayScene& scene,
+                                                  const Camera& camera, Diagnostics& diagnostics);
+
+}  // namespace gonio

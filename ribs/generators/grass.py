@@ -15,6 +15,10 @@ Presets (--model):
 Blades get a normalised-Phong micro BRDF (--kd, --ks, --exponent; default 0.5, 0.5, 10, the
 plastic shader's defaults) and a green colour; the ground is matte soil (Kd 0.3).
 
+The isotropic models ask for "averageazimuth": the light comes from every azimuth and photons
+are stored relative to it, so the map is the isotropic BRDF of the patch rather than one azimuth
+of the few blades under the sampling area.
+
 With --periodic the ground covers the tile, a blade crossing a tile edge is repeated on the
 opposite side, and the RIB asks for periodic tracing with the sampling area equal to the tile.
 
@@ -95,8 +99,9 @@ def main():
     if args.comment:
         out.write("# %s\n" % args.comment)
     out.write('Option "BRDFLight" "string texturename" "%s" "integer rays" %d "float area" %g '
-              '"integer isotropic" %d "integer periodic" %d\n'
-              % (args.texturename, args.rays, area, preset["iso"], int(args.periodic)))
+              '"integer isotropic" %d "integer averageazimuth" %d "integer periodic" %d\n'
+              % (args.texturename, args.rays, area, preset["iso"], preset["iso"],
+                 int(args.periodic)))
     out.write("WorldBegin\n")
     half = args.ground / 2
     # A periodic tile's ground reaches a little past the tile walls, so that a ray reaching the

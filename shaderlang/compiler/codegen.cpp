@@ -469,6 +469,12 @@ int CodeGenerator::Tuple(Node* e) {
     }
     if (values.size() == e->kids.size()) return Constant(values, e->type);
     int d = NewReg(e->type, e->varying);
+    if (e->kids.size() == 3) {
+        int a = ExprAs(e->kids[0], FloatType()), b = ExprAs(e->kids[1], FloatType()),
+            c = ExprAs(e->kids[2], FloatType());
+        Emit(Op::Triple, {d, a, b, c});
+        return d;
+    }
     for (size_t k = 0; k < e->kids.size(); ++k) {
         int v = ExprAs(e->kids[k], FloatType());
         Emit(Op::SetComp, {d, v}, int(k));

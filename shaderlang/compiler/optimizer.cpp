@@ -78,6 +78,7 @@ public:
         }
         RemoveDeadCode();
         Compact();
+        RemoveJumpsToNext();
         InferDetail();
         MarkUsed();
     }
@@ -88,6 +89,7 @@ private:
     void RemoveUnreachable();
     void RemoveDeadCode();
     void Compact();
+    void RemoveJumpsToNext();
     void InferDetail();
     void MarkUsed();
     bool Pinned(int r) const {
@@ -245,6 +247,18 @@ void Optimizer::Compact() {
     removed_.assign(p_.code.size(), false);
 }
 
+void Optimizer::RemoveJumpsToNext() {
+    bool any = false;
+    for (size_t i = 0; i < p_.code.size(); ++i) {
+        const Instr& in = p_.code[i];
+        if (Op(in.op) == Op::Jump && in.jump == int(i) + 1) {
+            removed_[i] = true;
+            any = true;
+        }
+    }
+    if (any) Compact();
+}
+
 void Optimizer::InferDetail() {
     std::vector<bool> candidate(p_.regs.size(), false);
     for (size_t r = 0; r < p_.regs.size(); ++r) {
@@ -318,6 +332,7 @@ bool EvaluateDefault(const Program& p, int param, int colorComponents,
     if (param < 0 || param >= int(p.params.size())) return false;
     const ParamCode& code = p.params[param];
     std::vector<bool> written(p.regs.size(), false);
+    written[code.reg] = true;  // array elements are stored one by one
     std::vector<int> reads, writes;
     for (int i = code.initBegin; i < code.initEnd; ++i) {
         const Instr& in = p.code[i];

@@ -11,8 +11,8 @@
 %parse-param {gonio::sl::ParseState* state}
 
 /* Statements that begin with a type name are declarations (or a nested function) before they
-   are casts: `float x;` declares x, `float f() {...}` defines f. Bison resolves the 4 shift/
-   reduce and 2 reduce/reduce conflicts this leaves towards the declaration (shift, and the
+   are casts: `float x;` declares x, `float f() {...}` defines f. Bison resolves the 5 shift/
+   reduce and 4 reduce/reduce conflicts this leaves towards the declaration (shift, and the
    earlier rule); CMake passes -Wno-conflicts-sr -Wno-conflicts-rr for them. */
 
 %code requires {
@@ -89,7 +89,7 @@ void ApplyPrefix(Node* list, const Node* prefix) {
 %token LEX_ERROR
 
 %type <value> shader_type type_kw assign_op
-%type <node> formals formal_groups formal_group formal_defs formal_def prefix qualifiers
+%type <node> formals formal_groups formal_group formal_defs formal_def qualifiers
 %type <node> stmts stmt block decl_stmt defs def init expr primary args arg_list opt_expr
 %type <node> function_def elements cast_operand
 %type <number> opt_level
@@ -175,11 +175,6 @@ qualifiers
     | qualifiers EXTERN { $$ = $1; $$->isExtern = true; }
     ;
 
-prefix
-    : type_kw { $$ = Make(state, NodeKind::List, @1); $$->declType.base = gonio::sl::BaseType($1); }
-    | qualifiers type_kw { $$ = $1; $$->declType.base = gonio::sl::BaseType($2); }
-    ;
-
 formals
     : %empty { $$ = Make(state, NodeKind::List, @$); }
     | formal_groups { $$ = $1; }
@@ -192,7 +187,17 @@ formal_groups
     ;
 
 formal_group
-    : prefix formal_defs { ApplyPrefix($2, $1); $$ = $2; }
+    : type_kw formal_defs {
+          Node* prefix = Make(state, NodeKind::List, @1);
+          prefix->declType.base = gonio::sl::BaseType($1);
+          ApplyPrefix($2, prefix);
+          $$ = $2;
+      }
+    | qualifiers type_kw formal_defs {
+          $1->declType.base = gonio::sl::BaseType($2);
+          ApplyPrefix($3, $1);
+          $$ = $3;
+      }
     ;
 
 formal_defs

@@ -19,7 +19,8 @@
 //                 |= entry[extra]; none: go to jump
 //   Solar         axis?, angle?: L = axis; entry[extra] = entry[extra-1]; lit |= entry[extra]
 //   Jump          go to jump
-// SetComp d, v writes component `extra` of d (tuples such as (u, v, 0)).
+// Triple d, a, b, c builds a point, vector, normal or 3-component colour from floats; SetComp
+// d, v writes component `extra` of d (longer tuples).
 // Pure opcodes that warn (Div by zero, IndexRead out of range) are folded only when they do not.
 
 #include <cstdint>
@@ -63,6 +64,7 @@ enum OpFlags : unsigned {
     X(Not,         kOpPure | kOpWrites,   OpNot)              \
     X(Select,      kOpPure | kOpWrites,   OpSelect)           \
     X(SetComp,     kOpWrites,             OpSetComp)          \
+    X(Triple,      kOpPure | kOpWrites,   OpTriple)           \
     X(IndexRead,   kOpPure | kOpWrites,   OpIndexRead)        \
     X(IndexWrite,  0,                     OpIndexWrite)       \
     X(SpaceCast,   kOpWrites,             OpSpaceCast)        \

@@ -301,6 +301,24 @@ void OpSetComp(ExecState& x, const Instr& in) {
     }
 }
 
+void OpTriple(ExecState& x, const Instr& in) {
+    const RegRef d = x.Reg(in.args[0]);
+    for (int c = 0; c < 3; ++c) {
+        const RegRef v = x.Reg(in.args[1 + c]);
+        float* out = d.Plane(c);
+        const float* pv = v.Plane(0);
+        if (!d.varying) {
+            out[0] = pv[0];
+            continue;
+        }
+        const uint8_t* mask = x.Mask(in);
+        const int sv = v.Stride();
+        for (int i = 0; i < x.n; ++i) {
+            if (!mask || mask[i]) out[i] = pv[i * sv];
+        }
+    }
+}
+
 void OpSpaceCast(ExecState& x, const Instr& in) {
     // extra: 0 point, 1 vector, 2 normal, 3 matrix. The value is in `space`; the result in
     // current space.

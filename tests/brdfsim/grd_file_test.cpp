@@ -1,12 +1,13 @@
 // .grd files: bit-exact round trips, the baked table, and clear rejection of truncated, corrupt
 // and foreign files.
+#include "grd_file.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <iterator>
 
 #include "baked_table.h"
-#include "grd_file.h"
 #include "test_util.h"
 
 namespace gonio {
@@ -15,9 +16,7 @@ namespace {
 using test::kDeg;
 using test::kPi;
 
-std::string TempPath(const std::string& name) {
-    return ::testing::TempDir() + "brdf_grd_" + name;
-}
+std::string TempPath(const std::string& name) { return ::testing::TempDir() + "brdf_grd_" + name; }
 
 std::string Slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -36,9 +35,8 @@ struct Written {
 // An isotropic grid with a baked table, written once for all tests here.
 const Written& IsoFile() {
     static const Written written = [] {
-        Written w{TempPath("iso.grd"),
-                  test::SyntheticSplats("phong:0.3,0.7,10", 20000, true, false, 0.3,
-                                        Norm::kL2, Horizon::kReflect, 3)};
+        Written w{TempPath("iso.grd"), test::SyntheticSplats("phong:0.3,0.7,10", 20000, true, false,
+                                                             0.3, Norm::kL2, Horizon::kReflect, 3)};
         const BrdfIsoGrid grid(w.splats, 4, 9);
         const BakedTable baked(grid, 12);
         WriteGrd(w.path, *w.splats, 4, 9, grid.Lists(), &baked);
@@ -124,9 +122,9 @@ TEST(GrdFile, RejectsForeignFiles) {
 
 TEST(GrdFile, RejectsTruncatedFilesAtAnyLength) {
     const std::string bytes = Slurp(IsoFile().path);
-    for (std::size_t length : {std::size_t(4), std::size_t(12), std::size_t(40), std::size_t(80),
-                               bytes.size() / 3, bytes.size() / 2, bytes.size() - 20,
-                               bytes.size() - 1}) {
+    for (std::size_t length :
+         {std::size_t(4), std::size_t(12), std::size_t(40), std::size_t(80), bytes.size() / 3,
+          bytes.size() / 2, bytes.size() - 20, bytes.size() - 1}) {
         const std::string message = GrdErrorOf(bytes.substr(0, length));
         EXPECT_FALSE(message.empty()) << length;
         EXPECT_TRUE(message.find("truncated") != std::string::npos ||

@@ -53,8 +53,8 @@ TEST(HemisphereGrid, DistanceToCellIsTheExactMinimum) {
             for (int j = 0; j <= 400; ++j) {
                 const Imath::V3f p = DirectionFromAngles(0.5 * kPi * i / 200, 2 * kPi * j / 400);
                 if (grid.CellOf(p) != cell) continue;
-                brute = std::min(brute, std::acos(std::clamp(c.dot(Imath::V3d(p.x, p.y, p.z)),
-                                                             -1.0, 1.0)));
+                brute = std::min(
+                    brute, std::acos(std::clamp(c.dot(Imath::V3d(p.x, p.y, p.z)), -1.0, 1.0)));
             }
         }
         EXPECT_LE(d, brute + 1e-6);  // the brute-force points are floats
@@ -69,8 +69,8 @@ std::vector<std::array<double, 4>> ProbePoints(int count) {
     std::vector<std::array<double, 4>> points = {
         {0, 0, 0, 0}, {0, 1, 89.5 * kDeg, 2}, {89.5 * kDeg, 3, 89.5 * kDeg, 1}, {1.2, 0, 0, 0}};
     while (static_cast<int>(points.size()) < count) {
-        points.push_back({0.5 * kPi * u(rng), 2 * kPi * u(rng), 0.5 * kPi * u(rng),
-                          2 * kPi * u(rng)});
+        points.push_back(
+            {0.5 * kPi * u(rng), 2 * kPi * u(rng), 0.5 * kPi * u(rng), 2 * kPi * u(rng)});
     }
     return points;
 }
@@ -93,15 +93,14 @@ class GridEqualsSimple : public ::testing::TestWithParam<std::tuple<Norm, Horizo
 
 TEST_P(GridEqualsSimple, Anisotropic) {
     const auto [norm, horizon] = GetParam();
-    auto splats = test::SyntheticSplats("phong:0.4,0.6,10", 20000, false, false, 0.4, norm,
-                                        horizon);
+    auto splats =
+        test::SyntheticSplats("phong:0.4,0.6,10", 20000, false, false, 0.4, norm, horizon);
     ExpectSameAsSimple(BrdfGrid(splats, 4, 9), BrdfSimple(splats));
 }
 
 TEST_P(GridEqualsSimple, Isotropic) {
     const auto [norm, horizon] = GetParam();
-    auto splats = test::SyntheticSplats("phong:0.4,0.6,10", 20000, true, false, 0.4, norm,
-                                        horizon);
+    auto splats = test::SyntheticSplats("phong:0.4,0.6,10", 20000, true, false, 0.4, norm, horizon);
     ExpectSameAsSimple(BrdfIsoGrid(splats, 5, 11), BrdfSimple(splats));
 }
 
@@ -136,11 +135,12 @@ TEST(Table41, SplatsPerCellReport) {
         int rings, rects;
         DefaultGridFor(c.radius, &rings, &rects);
         const GridStats fine = BrdfGrid(splats, rings, rects).Stats();
-        std::printf("Table 4.1  %-10s 100,000 photons  width %.2f  5 bands 5 rects: average %7.0f "
-                    "ratio %.4f (thesis %.2f) | default %d bands %d rects: average %6.0f ratio "
-                    "%.4f\n",
-                    c.name, c.radius, coarse.averageSplats, coarse.ratio, c.thesisRatio, rings,
-                    rects, fine.averageSplats, fine.ratio);
+        std::printf(
+            "Table 4.1  %-10s 100,000 photons  width %.2f  5 bands 5 rects: average %7.0f "
+            "ratio %.4f (thesis %.2f) | default %d bands %d rects: average %6.0f ratio "
+            "%.4f\n",
+            c.name, c.radius, coarse.averageSplats, coarse.ratio, c.thesisRatio, rings, rects,
+            fine.averageSplats, fine.ratio);
         EXPECT_GT(coarse.ratio, 0.2 * c.thesisRatio);
         EXPECT_LT(coarse.ratio, 1.5 * c.thesisRatio);
         EXPECT_LT(fine.ratio, 0.5 * coarse.ratio);

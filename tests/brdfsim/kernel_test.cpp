@@ -1,11 +1,11 @@
 // The kernel and its normalisation: the flat integrals against the thesis's closed forms, the
 // sphere integrals against an independent Monte Carlo estimate, and the in-domain masses.
+#include "kernel.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
-
-#include "kernel.h"
 
 namespace gonio {
 namespace {

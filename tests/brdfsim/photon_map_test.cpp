@@ -1,5 +1,7 @@
 // Photon-map files: round trip, streaming, the header's traced paths, and clear rejection of
 // malformed input with file and line; synthetic maps are deterministic whatever the threads.
+#include "photon_map.h"
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -7,15 +9,12 @@
 #include <fstream>
 #include <string>
 
-#include "photon_map.h"
 #include "synth.h"
 
 namespace gonio {
 namespace {
 
-std::string TempPath(const std::string& name) {
-    return ::testing::TempDir() + "brdf_pm_" + name;
-}
+std::string TempPath(const std::string& name) { return ::testing::TempDir() + "brdf_pm_" + name; }
 
 void WriteText(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;

@@ -56,7 +56,8 @@ TEST(Reconstruction, LambertAnisotropicIsUnbiased) {
         for (double to : {0, 10, 20, 30, 40, 50, 60, 70, 80, 85}) {
             for (int pi = 0; pi < 4; ++pi) {
                 for (int po = 0; po < 8; ++po) {
-                    grid.EvalAngles(ti * kDeg, pi * kPi / 2 + 0.3, to * kDeg, po * kPi / 4 + 0.1, f);
+                    grid.EvalAngles(ti * kDeg, pi * kPi / 2 + 0.3, to * kDeg, po * kPi / 4 + 0.1,
+                                    f);
                     const double rel = f[0] / (0.5 / kPi) - 1;
                     sum += rel;
                     worst = std::max(worst, std::abs(rel));
@@ -88,8 +89,7 @@ TEST(Reconstruction, ReflectionBeatsTheThesisRenormalisationAtTheHorizon) {
     // near the horizon; reflection does not. Measured: -10% (85°) and -26% (89°) against <0.1%.
     for (double thetaOut : {85.0, 89.0}) {
         EXPECT_LT(std::abs(MeanErrorAtThetaOut(LambertIso(Horizon::kReflect), thetaOut)), 0.005);
-        EXPECT_GT(std::abs(MeanErrorAtThetaOut(LambertIso(Horizon::kRenormalize), thetaOut)),
-                  0.05);
+        EXPECT_GT(std::abs(MeanErrorAtThetaOut(LambertIso(Horizon::kRenormalize), thetaOut)), 0.05);
     }
 }
 
@@ -126,9 +126,10 @@ TEST(Reconstruction, PhongPeakAndWidthAsSmoothingPredicts) {
     const double predictedFwhm = analyticFwhm * std::sqrt((sigma2 + 2 * s2) / sigma2);
     for (double ti : {0.0, 30.0, 60.0}) {
         const test::Lobe lobe = test::PlaneOfIncidenceLobe(PhongIso(), ti);
-        std::printf("Phong n=25, 300k, R 0.15, theta_in %2.0f: peak %.3f (predicted %.3f), "
-                    "FWHM %.2f deg (predicted %.2f)\n",
-                    ti, lobe.peak, analyticPeak * peakFactor, lobe.fwhm, predictedFwhm);
+        std::printf(
+            "Phong n=25, 300k, R 0.15, theta_in %2.0f: peak %.3f (predicted %.3f), "
+            "FWHM %.2f deg (predicted %.2f)\n",
+            ti, lobe.peak, analyticPeak * peakFactor, lobe.fwhm, predictedFwhm);
         EXPECT_NEAR(lobe.peakAt, ti, 1.0);
         EXPECT_NEAR(lobe.peak / (analyticPeak * peakFactor), 1.0, 0.03) << ti;
         EXPECT_NEAR(lobe.fwhm / predictedFwhm, 1.0, 0.04) << ti;
@@ -147,13 +148,13 @@ TEST(Reconstruction, ReciprocalBrdfsReconstructReciprocally) {
 TEST(Reconstruction, NonReciprocalLobeIsDetected) {
     // The metric itself: f·cos θ_in is not reciprocal and must score well above the bound above.
     class CosineWeighted : public Brdf {
-    public:
+      public:
         int NumComponents() const override { return 1; }
         bool IsIsotropic() const override { return true; }
         void Eval(const Imath::V3f& wIn, const Imath::V3f& wOut, float* f) const override {
-            f[0] = static_cast<float>(kPhong.Eval(Imath::V3d(wIn.x, wIn.y, wIn.z),
-                                                  Imath::V3d(wOut.x, wOut.y, wOut.z)) *
-                                      wIn.z);
+            f[0] = static_cast<float>(
+                kPhong.Eval(Imath::V3d(wIn.x, wIn.y, wIn.z), Imath::V3d(wOut.x, wOut.y, wOut.z)) *
+                wIn.z);
         }
         std::size_t MemoryBytes() const override { return 0; }
     };

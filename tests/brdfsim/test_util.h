@@ -89,12 +89,11 @@ inline Lobe MeasureLobe(const std::vector<double>& x, const std::vector<double>&
     std::size_t lo = top, hi = top;
     while (lo > 0 && y[lo - 1] >= half) --lo;
     while (hi + 1 < y.size() && y[hi + 1] >= half) ++hi;
-    const double left = lo > 0 ? x[lo - 1] + (half - y[lo - 1]) / (y[lo] - y[lo - 1]) *
-                                                 (x[lo] - x[lo - 1])
-                               : x[lo];
-    const double right = hi + 1 < y.size() ? x[hi] + (y[hi] - half) / (y[hi] - y[hi + 1]) *
-                                                         (x[hi + 1] - x[hi])
-                                           : x[hi];
+    const double left =
+        lo > 0 ? x[lo - 1] + (half - y[lo - 1]) / (y[lo] - y[lo - 1]) * (x[lo] - x[lo - 1]) : x[lo];
+    const double right = hi + 1 < y.size()
+                             ? x[hi] + (y[hi] - half) / (y[hi] - y[hi + 1]) * (x[hi + 1] - x[hi])
+                             : x[hi];
     lobe.fwhm = right - left;
     return lobe;
 }

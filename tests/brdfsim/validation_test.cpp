@@ -46,10 +46,11 @@ TEST(Validation, Phong1MPeakAndWidth) {
         2 * std::acos(std::pow(0.5, 1 / n)) / kDeg * std::sqrt((sigma2 + 2 * s2) / sigma2);
     for (double ti : {0.0, 30.0, 60.0}) {
         const test::Lobe lobe = test::PlaneOfIncidenceLobe(grid, ti);
-        std::printf("Phong n=25, 1M, R 0.1, theta_in %2.0f: peak %.3f at %.2f (predicted %.3f, "
-                    "analytic %.3f), FWHM %.2f deg (predicted %.2f)\n",
-                    ti, lobe.peak, lobe.peakAt, analyticPeak * peakFactor, analyticPeak,
-                    lobe.fwhm, predictedFwhm);
+        std::printf(
+            "Phong n=25, 1M, R 0.1, theta_in %2.0f: peak %.3f at %.2f (predicted %.3f, "
+            "analytic %.3f), FWHM %.2f deg (predicted %.2f)\n",
+            ti, lobe.peak, lobe.peakAt, analyticPeak * peakFactor, analyticPeak, lobe.fwhm,
+            predictedFwhm);
         EXPECT_NEAR(lobe.peakAt, ti, 1.0);
         EXPECT_NEAR(lobe.peak / (analyticPeak * peakFactor), 1.0, 0.025);
         EXPECT_NEAR(lobe.fwhm / predictedFwhm, 1.0, 0.03);

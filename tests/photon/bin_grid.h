@@ -1,7 +1,9 @@
 #pragma once
 // A grid of outgoing-direction bins (θ bands × φ sectors) and the χ² comparison of a tracer's
 // binned energies with the expectation of an analytic BRDF, ∫ p(θ′) ∫_bin f cos θ dω dθ′, for
-// isotropic runs (φ′ = 0, cos θ′ uniform on a band).
+// isotropic runs (φ′ = 0, θ′ uniform on a band).
+
+#include <tbb/parallel_for.h>
 
 #include <functional>
 #include <numeric>
@@ -47,20 +49,20 @@ constexpr double kGaussW[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066
                                0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
                                0.2223810344533745, 0.1012285362903763};
 
-// E[β 1_bin] per path for f(ω′, ω) with φ′ = 0 and cos θ′ uniform on [cos θmax, cos θmin].
+// E[β 1_bin] per path for f(ω′, ω) with φ′ = 0 and θ′ uniform on [θmin, θmax] (isotropic runs).
 inline std::vector<double> ExpectedBinEnergy(
     const BinGrid& grid, double thetaMin, double thetaMax,
     const std::function<double(const Imath::V3d&, const Imath::V3d&)>& f, int m) {
     std::vector<double> expected(grid.Size(), 0.0);
-    const double c0 = std::cos(thetaMax), c1 = std::cos(thetaMin);
     for (int g = 0; g < 8; ++g) {
-        const double cosIn = 0.5 * (c0 + c1) + 0.5 * (c1 - c0) * kGaussX[g];
-        const Imath::V3d wIn = Direction(std::acos(cosIn), 0);
-        for (int b = 0; b < grid.Size(); ++b) {
+        const double thetaIn =
+            0.5 * (thetaMin + thetaMax) + 0.5 * (thetaMax - thetaMin) * kGaussX[g];
+        const Imath::V3d wIn = Direction(thetaIn, 0);
+        tbb::parallel_for(0, grid.Size(), [&](int b) {
             expected[b] += 0.5 * kGaussW[g] *
                            grid.Integrate(
                                b, [&](const Imath::V3d& w) { return f(wIn, w) * w.z; }, m);
-        }
+        });
     }
     return expected;
 }

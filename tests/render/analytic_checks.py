@@ -320,6 +320,17 @@ def object_instance_inherits_current_attributes(b, me):
            f"instance after Color [1 0 0] has colour {centre[:3]}")
 
 
+@check("batch", known_bug="ColorSamples with n != 3 overflows the 3-colour shading buffer")
+def colour_samples_convert_to_rgb(b, me):
+    """RISpec §4.1.3 ColorSamples: colours have n components, converted to RGB by nRGB. Six
+    components of 0.5 whose nRGB rows are the identity then zeros give RGB 0.5 0.5 0.5."""
+    matrix = "[1 0 0  0 1 0  0 0 1  0 0 0  0 0 0  0 0 0] [1 0 0 0 0 0  0 1 0 0 0 0  0 0 1 0 0 0]"
+    b.frame(me, "a", ortho(fmt="8 8", extra=f"ColorSamples {matrix}\n"),
+            "Color [0.5 0.5 0.5 0.5 0.5 0.5]\nPolygon \"P\" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]")
+    yield
+    expect_values(b.image(me, "a").pixels[(4, 4)], [0.5, 0.5, 0.5, 1], 1e-6, "grey pixel")
+
+
 # ---- determinism, seeds, outputs (their own command lines) -----------------------------------
 
 SCENES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes")

@@ -1,0 +1,34 @@
+#pragma once
+// Filtered texture and environment lookups for the shading language, through OpenImageIO's
+// TextureSystem (mipmapped, cached; make tiled mipmaps with `maketx`). Thread-safe.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gonio {
+
+class TextureLookup {
+  public:
+    TextureLookup();
+    ~TextureLookup();
+
+    // `channels` channels from `firstChannel` at (s, t) for each active point of n, filtered
+    // over the footprint given by the derivatives (which may be null: a point lookup). Writes
+    // channels × n floats, component-major. False if the file cannot be read (out is zeroed).
+    bool Texture(const std::string& file, int firstChannel, int channels, int n, const float* s,
+                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
+                 const float* dtdy, const uint8_t* active, float* out);
+    // A lat-long or cube environment map in direction D (3 × n, world space).
+    bool Environment(const std::string& file, int firstChannel, int channels, int n,
+                     const float* directions, const uint8_t* active, float* out);
+    // Why the last failed lookup failed.
+    std::string LastError() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gonio

@@ -1,0 +1,135 @@
+#include "shading/frame_shaders.h"
+
+#include <filesystem>
+#include <sstream>
+
+namespace gonio {
+namespace {
+
+// Parameters named like shading globals are never bound from primitive variables: the
+// renderer passes those as globals.
+bool IsGlobalName(const std::string& name) {
+    static const char* const kGlobals[] = {"P", "Pw", "Pz", "N", "Ng", "Cs",    "Os",
+                                           "s", "t",  "st", "u", "v",  "width", "constantwidth"};
+    for (const char* g : kGlobals)
+        if (name == g) return true;
+    return false;
+}
+
+// A shader request as text: equal requests share one instance.
+std::string RequestKey(const ShaderInstance& request) {
+    std::ostringstream key;
+    key << request.name << '|';
+    for (const Param& p : request.params) {
+        key << p.token << '=';
+        for (double d : p.numbers) key << d << ',';
+        for (const std::string& s : p.strings) key << s << ',';
+        key << ';';
+    }
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) key << request.worldFromShader[r][c] << ',';
+    return key.str();
+}
+
+// The shader search path: Option "searchpath" "shader" with '&' for the previous path and '@'
+// for the default, which is the scene's folder and then the shaders that ship with gonio.
+std::string ShaderSearchPath(const Frame& frame) {
+    std::string sceneFolder = std::filesystem::path(frame.sceneFile).parent_path().string();
+    if (sceneFolder.empty()) sceneFolder = ".";
+    const std::string standard = sceneFolder + ":" + DefaultShaderFolder();
+    auto it = frame.options.user.find("searchpath");
+    if (it == frame.options.user.end()) return standard;
+    for (const Param& p : it->second) {
+        if (p.token != "uniform string shader" || p.strings.empty()) continue;
+        std::string path = p.strings[0];
+        for (size_t at = path.find('@'); at != std::string::npos; at = path.find('@'))
+            path.replace(at, 1, standard);
+        for (size_t amp = path.find('&'); amp != std::string::npos; amp = path.find('&'))
+            path.replace(amp, 1, standard);
+        return path;
+    }
+    return standard;
+}
+
+}  // namespace
+
+std::string DefaultShaderFolder() { return GONIO_SHADER_DIR; }
+
+FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
+    : frame_(frame),
+      diagnostics_(diagnostics),
+      system_(std::make_unique<sl::ShadingSystem>(diagnostics, frame.options.colorComponents)) {
+    system_->SetSearchPath(ShaderSearchPath(frame));
+    for (const SceneShape& shape : frame.shapes) AddShapeGroup(shape);
+    for (const ObjectInstanceUse& use : frame.instances)
+        for (const SceneShape& shape : use.definition->shapes) AddShapeGroup(shape);
+    for (const SceneLight& light : frame.lights) {
+        FrameLight frameLight;
+        frameLight.instance = Instance(light.light.shader, sl::ShaderType::Light);
+        frameLight.currentFromShader = light.light.shader.worldFromShader * CurrentFromWorld();
+        frameLight.castsShadows = light.castsShadows;
+        lights_.push_back(std::move(frameLight));
+    }
+    // Parameters are known and primitive variables bound: fold every instance's constants now,
+    // before the threads share them.
+    for (auto& [key, instance] : instances_)
+        if (instance) instance->Specialize();
+}
+
+std::shared_ptr<sl::ShaderInstance> FrameShaders::Instance(const ShaderInstance& request,
+                                                           sl::ShaderType expected) {
+    if (!request.IsSet()) return nullptr;
+    const std::string key = RequestKey(request);
+    auto found = instances_.find(key);
+    if (found != instances_.end()) return found->second;
+    std::shared_ptr<sl::ShaderInstance>& instance = instances_[key];
+    std::shared_ptr<const sl::Shader> shader = system_->Load(request.name, request.loc);
+    if (!shader) return nullptr;
+    if (shader->Type() != expected) {
+        diagnostics_.Error(request.loc, "\"" + request.name + "\" is a " +
+                                            sl::ToString(shader->Type()) + " shader, not a " +
+                                            sl::ToString(expected) + " shader");
+        return nullptr;
+    }
+    instance = std::make_shared<sl::ShaderInstance>(shader);
+    const M44f currentFromShader = request.worldFromShader * CurrentFromWorld();
+    instance->ApplyRibParameters(request.params, declarations_, currentFromShader, diagnostics_);
+    return instance;
+}
+
+void FrameShaders::AddShapeGroup(const SceneShape& shape) {
+    const Attributes* attributes = shape.attributes.get();
+    auto [it, isNew] = groups_.try_emplace(attributes);
+    ShaderGroup& group = it->second;
+    if (isNew) {
+        group.surface = Instance(attributes->surface, sl::ShaderType::Surface);
+        group.displacement = Instance(attributes->displacement, sl::ShaderType::Displacement);
+        group.atmosphere = Instance(attributes->atmosphere, sl::ShaderType::Volume);
+        group.surfaceRequest = &attributes->surface;
+    }
+    if (!group.surface) return;
+    // Primitive variables reach the surface shader's parameters of the same name (RSL §14.1).
+    auto bind = [&](const PrimVar& var) {
+        const std::string& name = var.decl.name;
+        if (IsGlobalName(name) || group.surface->IsBound(name)) return;
+        if (!group.surface->Master().FindParam(name)) return;
+        if (group.surface->BindPrimvar(name)) group.boundPrimvars.push_back(name);
+    };
+    std::visit(
+        [&](const auto& geometry) {
+            using T = std::decay_t<decltype(geometry)>;
+            if constexpr (std::is_same_v<T, TriangleMesh>) {
+                for (const MeshVar& mv : geometry.vars) bind(mv.var);
+            } else {
+                for (const PrimVar& var : geometry.vars.vars) bind(var);
+            }
+        },
+        shape.geometry);
+}
+
+const ShaderGroup* FrameShaders::Group(const Attributes* attributes) const {
+    auto it = groups_.find(attributes);
+    return it == groups_.end() ? nullptr : &it->second;
+}
+
+}  // namespace gonio

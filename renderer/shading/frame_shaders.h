@@ -1,0 +1,64 @@
+#pragma once
+// The shading-language side of one frame: the shading system with the frame's search path, one
+// shader instance per distinct Surface/Displacement/Atmosphere request (shared by every
+// primitive that uses it), and the light shaders. Built once per frame before rendering, then
+// read-only, so that all threads share it.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/camera.h"
+#include "rib/diagnostics.h"
+#include "scene/frame.h"
+#include "shaderlang/shading_system.h"
+
+namespace gonio {
+
+// The shaders one attribute state shades with.
+struct ShaderGroup {
+    std::shared_ptr<sl::ShaderInstance> surface;       // null: the default surface
+    std::shared_ptr<sl::ShaderInstance> displacement;  // may be null
+    std::shared_ptr<sl::ShaderInstance> atmosphere;    // may be null
+    const ShaderInstance* surfaceRequest = nullptr;    // for "shader" space
+    // Names of primitive variables bound to surface-shader parameters.
+    std::vector<std::string> boundPrimvars;
+};
+
+struct FrameLight {
+    std::shared_ptr<sl::ShaderInstance> instance;  // null when the shader failed to load
+    M44f currentFromShader;
+    bool castsShadows = false;
+};
+
+class FrameShaders {
+  public:
+    FrameShaders(const Frame& frame, Diagnostics& diagnostics);
+
+    // The group of an attribute state seen in the frame (null if the frame never used it).
+    const ShaderGroup* Group(const Attributes* attributes) const;
+    const std::vector<FrameLight>& Lights() const { return lights_; }
+    const Frame& GetFrame() const { return frame_; }
+    Diagnostics& GetDiagnostics() const { return diagnostics_; }
+    // Camera ("current") space from world space.
+    const M44f& CurrentFromWorld() const { return frame_.options.cameraFromWorld; }
+
+  private:
+    std::shared_ptr<sl::ShaderInstance> Instance(const ShaderInstance& request,
+                                                 sl::ShaderType expected);
+    void AddShapeGroup(const SceneShape& shape);
+
+    const Frame& frame_;
+    Diagnostics& diagnostics_;
+    std::unique_ptr<sl::ShadingSystem> system_;
+    Declarations declarations_;
+    std::map<std::string, std::shared_ptr<sl::ShaderInstance>> instances_;  // by request text
+    std::map<const Attributes*, ShaderGroup> groups_;
+    std::vector<FrameLight> lights_;
+};
+
+// The folder of the standard shaders that ship with gonio (the source tree's shaders/).
+std::string DefaultShaderFolder();
+
+}  // namespace gonio

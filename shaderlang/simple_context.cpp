@@ -1,0 +1,106 @@
+#include "shaderlang/simple_context.h"
+
+#include <algorithm>
+
+namespace gonio::sl {
+
+void SimpleShadingContext::BeginBatch(const ShaderGlobals& globals, int colorComponents) {
+    globals_ = globals;
+    globals_.primvars.clear();
+    n_ = globals.n;
+    colorComponents_ = colorComponents;
+    lightsValid_ = false;
+    uNeighbours_.assign(size_t(n_), -1);
+    vNeighbours_.assign(size_t(n_), -1);
+}
+
+bool SimpleShadingContext::CurrentFromSpace(const std::string& space, int, Imath::M44f* m) const {
+    static const char* const kKnown[] = {"current", "camera", "world", "object", "shader",
+                                         "screen",  "raster", "NDC"};
+    m->makeIdentity();
+    return std::find_if(std::begin(kKnown), std::end(kKnown),
+                        [&](const char* k) { return space == k; }) != std::end(kKnown);
+}
+
+const std::vector<LightResult>& SimpleShadingContext::Lights() {
+    if (lightsValid_) return lightResults_;
+    lightResults_.clear();
+    // The light shaders see the surface points as Ps; their own P is the origin.
+    ShaderGlobals g;
+    g.n = n_;
+    g.Ps = globals_.P;
+    g.E[0] = globals_.E[0], g.E[1] = globals_.E[1], g.E[2] = globals_.E[2];
+    g.time = globals_.time;
+    for (size_t i = 0; i < lights_.size(); ++i) {
+        LightResult result;
+        lightExecutor_.RunLight(*lights_[i], g, *this, &result);
+        result.shaderIndex = int(i);
+        lightResults_.push_back(std::move(result));
+    }
+    lightsValid_ = true;
+    return lightResults_;
+}
+
+bool SimpleShadingContext::Texture(const std::string& name, int, int channels, const float*,
+                                   const float*, const float*, const float*, const float*,
+                                   const float*, const uint8_t*, float* out) {
+    std::fill_n(out, size_t(channels) * n_, 0.0f);
+    RuntimeWarning("texture:" + name, "gonio shade has no textures: '" + name + "' is black");
+    return false;
+}
+
+bool SimpleShadingContext::Environment(const std::string& name, int, int channels, const float*,
+                                       const uint8_t*, float* out) {
+    std::fill_n(out, size_t(channels) * n_, 0.0f);
+    RuntimeWarning("environment:" + name, "gonio shade has no environment maps: '" + name +
+                                              "' is black");
+    return false;
+}
+
+bool SimpleShadingContext::Shadow(const std::string&, const float*, const uint8_t*, float* out) {
+    std::fill_n(out, size_t(n_), 0.0f);  // unshadowed
+    return false;
+}
+
+void SimpleShadingContext::Trace(const float*, const float*, const uint8_t*, float* out) {
+    std::fill_n(out, size_t(colorComponents_) * n_, 0.0f);  // nothing to hit
+}
+
+bool SimpleShadingContext::Attribute(const std::string&, const TypeSpec&, int,
+                                     std::vector<float>*, std::string*) const {
+    return false;
+}
+
+bool SimpleShadingContext::Option(const std::string&, const TypeSpec&, std::vector<float>*,
+                                  std::string*) const {
+    return false;
+}
+
+bool SimpleShadingContext::RendererInfo(const std::string& name, const TypeSpec& type,
+                                        std::vector<float>*, std::string* text) const {
+    if (name == "renderer" && type.base == BaseType::String) {
+        *text = "gonio";
+        return true;
+    }
+    return false;
+}
+
+void SimpleShadingContext::RuntimeWarning(const std::string& key, const std::string& message) {
+    // `key` is "file.sl:LINE" for shader code; report as a compiler would, once.
+    size_t colon = key.rfind(':');
+    FileLoc loc;
+    if (colon != std::string::npos && colon + 1 < key.size() &&
+        std::isdigit(static_cast<unsigned char>(key[colon + 1]))) {
+        loc.file = std::make_shared<const std::string>(key.substr(0, colon));
+        loc.line = std::atoi(key.c_str() + colon + 1);
+    } else {
+        loc.file = std::make_shared<const std::string>("gonio shade");
+    }
+    diagnostics_.WarningOnce(key + message, loc, message);
+}
+
+void SimpleShadingContext::Print(const std::string& text) {
+    std::fputs(text.c_str(), printSink_);
+}
+
+}  // namespace gonio::sl

@@ -1,0 +1,122 @@
+// The front end: preprocessor, syntax errors and the type checker's messages (exact text).
+
+#include <gtest/gtest.h>
+
+#include "sl_test_util.h"
+
+namespace gonio::sl {
+namespace {
+
+using testing::Errors;
+
+TEST(ShadeCheck, SyntaxErrorsAreAllReportedWithLocations) {
+    std::string e = Errors("surface t() {\n  float x = ;\n  Ci = 1 +;\n}\n");
+    EXPECT_NE(e.find("test.sl:2:13: error: syntax error"), std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:3:11: error: syntax error"), std::string::npos) << e;
+}
+
+TEST(ShadeCheck, TypeErrorsAreAllReported) {
+    std::string e = Errors(
+        "surface t() {\n"
+        "  point p = P;\n"
+        "  color c = p;\n"
+        "  float f = nosuch(1);\n"
+        "  Ci = Cs + p;\n"
+        "  float g = (u < 1);\n"
+        "  Ci = undefinedvar;\n"
+        "}\n");
+    EXPECT_NE(e.find("test.sl:3:13: error: in the initialiser of 'c': cannot convert point to color"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:4:13: error: unknown function 'nosuch'"), std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:5:11: error: cannot apply '+' to color and point (points and colors "
+                     "do not mix)"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:6:16: error: a comparison result can only be used as a condition"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:7:8: error: unknown variable 'undefinedvar'"), std::string::npos) << e;
+}
+
+TEST(ShadeCheck, UniformVaryingRules) {
+    std::string e = Errors(
+        "surface t() {\n"
+        "  uniform float a = u;\n"
+        "  uniform float b = 1;\n"
+        "  if (u > 0.5) b = 2;\n"
+        "  b = s;\n"
+        "  uniform float c = 0;\n"
+        "  if (b > 0) c = 3;\n"
+        "}\n");
+    EXPECT_NE(e.find("test.sl:2:21: error: cannot initialise uniform 'a' with a varying value"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:4:16: error: cannot assign to uniform 'b' under a varying condition"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:5:3: error: cannot assign a varying value to uniform 'b'"),
+              std::string::npos) << e;
+    EXPECT_EQ(e.find("test.sl:7:"), std::string::npos) << "a uniform condition is fine: " << e;
+}
+
+TEST(ShadeCheck, ReadOnlyGlobalsAndParametersNeedDefaults) {
+    std::string e = Errors("surface t(float Kd;) { P = 0; L = 0; }\n");
+    EXPECT_NE(e.find("test.sl:1:17: error: shader parameter 'Kd' needs a default value"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("error: cannot assign to 'P': it is read-only in surface shaders"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("error: cannot assign to 'L': it is read-only in surface shaders"),
+              std::string::npos) << e;
+}
+
+TEST(ShadeCheck, OverloadsResolveOnExpectedReturnType) {
+    testing::CapturedDiagnostics d;
+    auto shader = testing::Compile(
+        "surface t() { float f = noise(P); color c = noise(P); Ci = c + f; }", d);
+    EXPECT_TRUE(shader) << d.Text();
+    std::string e = Errors("surface t() { Ci = normalize(\"x\"); }");
+    EXPECT_NE(e.find("error: no version of 'normalize' takes (string)"), std::string::npos) << e;
+}
+
+TEST(ShadeCheck, ControlFlowErrors) {
+    std::string e = Errors(
+        "surface t() {\n"
+        "  break;\n"
+        "  while (1 < 2) { continue 2; }\n"
+        "  illuminate (P) { }\n"
+        "}\n");
+    EXPECT_NE(e.find("test.sl:2:3: error: break outside a loop"), std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:3:19: error: continue 2 leaves more loops than enclose it"),
+              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:4:3: error: illuminate is only allowed in light shaders"),
+              std::string::npos) << e;
+}
+
+TEST(ShadeCheck, RecursionIsAnError) {
+    std::string e = Errors("float f(float x) { return f(x); }\nsurface t() { Ci = f(1); }\n");
+    EXPECT_NE(e.find("error: recursive call of 'f'"), std::string::npos) << e;
+}
+
+TEST(ShadePreprocessor, DefinesConditionalsAndLineNumbers) {
+    auto r = testing::Shade(
+        "#define SCALE(x) ((x) * 2)\n"
+        "#define ONE 1\n"
+        "#if defined(ONE) && ONE + 1 == 2\n"
+        "#define VALUE SCALE(3)\n"
+        "#else\n"
+        "#define VALUE 0\n"
+        "#endif\n"
+        "/* a comment\n   over lines */\n"
+        "surface t() { Ci = VALUE; }\n",
+        1, 1, "Ci");
+    ASSERT_EQ(r.width, 3) << r.diagnostics;
+    EXPECT_EQ(r.At(0, 0), 6);
+    std::string e = Errors("#ifdef NOTHING\n#endif\n/* x\n*/\nsurface t() {\n  Ci = oops;\n}\n");
+    EXPECT_NE(e.find("test.sl:6:8: error: unknown variable 'oops'"), std::string::npos) << e;
+    e = Errors("#line 40 \"other.sl\"\nsurface t() { Ci = oops; }\n");
+    EXPECT_NE(e.find("other.sl:40:20: error: unknown variable 'oops'"), std::string::npos) << e;
+    e = Errors("#if 1\nsurface t() {}\n");
+    EXPECT_NE(e.find("error: #if without #endif"), std::string::npos) << e;
+    e = Errors("#include \"missing.h\"\nsurface t() {}\n");
+    EXPECT_NE(e.find("test.sl:1:1: error: cannot find include file 'missing.h'"),
+              std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace gonio::sl
