@@ -57,9 +57,8 @@ bool ApplyAssignment(sl::ShaderInstance& instance, const std::string& assignment
         return false;
     }
     if (p->type.base == sl::BaseType::String) {
-        return instance.SetParameter(name, p->type.IsArray() ? Split(value, ',')
-                                                             : std::vector<std::string>{value},
-                                     error);
+        return instance.SetParameter(
+            name, p->type.IsArray() ? Split(value, ',') : std::vector<std::string>{value}, error);
     }
     std::vector<float> numbers;
     for (const std::string& item : Split(value, ',')) {
@@ -165,7 +164,8 @@ int RunShade(const ShadeOptions& options) {
     compile.colorComponents = options.colorComponents;
     for (const std::string& d : options.defines) {
         size_t eq = d.find('=');
-        compile.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "" : d.substr(eq + 1));
+        compile.defines.emplace_back(d.substr(0, eq),
+                                     eq == std::string::npos ? "" : d.substr(eq + 1));
     }
     auto shader = sl::CompileShaderFile(options.file, compile, diagnostics);
     if (!shader) return 1;

@@ -47,7 +47,8 @@ int RunShader(const ShaderOptions& options) {
     compile.colorComponents = options.colorComponents;
     for (const std::string& d : options.defines) {
         size_t eq = d.find('=');
-        compile.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "" : d.substr(eq + 1));
+        compile.defines.emplace_back(d.substr(0, eq),
+                                     eq == std::string::npos ? "" : d.substr(eq + 1));
     }
     auto shader = sl::CompileShaderFile(options.file, compile, diagnostics);
     if (!shader) return diagnostics.ErrorCount() > 0 && !std::ifstream(options.file) ? 2 : 1;

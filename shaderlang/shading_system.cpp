@@ -16,11 +16,16 @@ namespace gonio::sl {
 
 const char* ToString(ShaderType type) {
     switch (type) {
-        case ShaderType::Surface: return "surface";
-        case ShaderType::Light: return "light";
-        case ShaderType::Displacement: return "displacement";
-        case ShaderType::Volume: return "volume";
-        case ShaderType::Imager: return "imager";
+        case ShaderType::Surface:
+            return "surface";
+        case ShaderType::Light:
+            return "light";
+        case ShaderType::Displacement:
+            return "displacement";
+        case ShaderType::Volume:
+            return "volume";
+        case ShaderType::Imager:
+            return "imager";
     }
     return "?";
 }
@@ -132,8 +137,8 @@ std::shared_ptr<const Shader> ShadingSystem::Load(const std::string& name, const
     if (found.empty()) {
         std::string dirs;
         for (const std::string& d : searchPath_) dirs += (dirs.empty() ? "" : ", ") + d;
-        diagnostics_.Error(where, "cannot find shader '" + name + "' (looked for " + file +
-                                      " in " + dirs + ")");
+        diagnostics_.Error(
+            where, "cannot find shader '" + name + "' (looked for " + file + " in " + dirs + ")");
     } else {
         CompileOptions options;
         options.includeDirs = searchPath_;
@@ -209,8 +214,8 @@ bool ShaderInstance::ApplyRibParameters(const ParamList& params, const Declarati
         std::string bare = param.token.substr(param.token.find_last_of(' ') + 1);
         const ShaderParam* p = shader_->FindParam(bare);
         if (!p) {
-            diagnostics.Warning(param.loc, "shader '" + shader_->Name() +
-                                               "' has no parameter '" + bare + "' (ignored)");
+            diagnostics.Warning(param.loc, "shader '" + shader_->Name() + "' has no parameter '" +
+                                               bare + "' (ignored)");
             continue;
         }
         std::string error;
@@ -224,14 +229,25 @@ bool ShaderInstance::ApplyRibParameters(const ParamList& params, const Declarati
             bool match = false;
             switch (decl->type) {
                 case ParamType::Float:
-                case ParamType::Integer: match = want == BaseType::Float; break;
-                case ParamType::String: match = want == BaseType::String; break;
-                case ParamType::Color: match = want == BaseType::Color; break;
+                case ParamType::Integer:
+                    match = want == BaseType::Float;
+                    break;
+                case ParamType::String:
+                    match = want == BaseType::String;
+                    break;
+                case ParamType::Color:
+                    match = want == BaseType::Color;
+                    break;
                 case ParamType::Point:
                 case ParamType::Vector:
-                case ParamType::Normal: match = p->type.IsPointLike(); break;
-                case ParamType::Matrix: match = want == BaseType::Matrix; break;
-                default: match = false;
+                case ParamType::Normal:
+                    match = p->type.IsPointLike();
+                    break;
+                case ParamType::Matrix:
+                    match = want == BaseType::Matrix;
+                    break;
+                default:
+                    match = false;
             }
             if (!match) {
                 diagnostics.Error(param.loc, "parameter '" + bare + "' is declared " +
@@ -378,25 +394,44 @@ void LoadRegister(ExecState& x, int r, const float* source, const float* default
 
 const float* GlobalSource(int id, const ShaderGlobals& g) {
     switch (id) {
-        case kGlobalP: return g.P;
-        case kGlobalN: return g.N;
-        case kGlobalNg: return g.Ng;
-        case kGlobalI: return g.I;
-        case kGlobalDPdu: return g.dPdu;
-        case kGlobalDPdv: return g.dPdv;
-        case kGlobalDPdtime: return g.dPdtime;
-        case kGlobalU: return g.u;
-        case kGlobalV: return g.v;
-        case kGlobalDu: return g.du;
-        case kGlobalDv: return g.dv;
-        case kGlobalS: return g.s;
-        case kGlobalT: return g.t;
-        case kGlobalCs: return g.Cs;
-        case kGlobalOs: return g.Os;
-        case kGlobalCi: return g.Ci;
-        case kGlobalOi: return g.Oi ? g.Oi : g.Os;
-        case kGlobalPs: return g.Ps;
-        default: return nullptr;
+        case kGlobalP:
+            return g.P;
+        case kGlobalN:
+            return g.N;
+        case kGlobalNg:
+            return g.Ng;
+        case kGlobalI:
+            return g.I;
+        case kGlobalDPdu:
+            return g.dPdu;
+        case kGlobalDPdv:
+            return g.dPdv;
+        case kGlobalDPdtime:
+            return g.dPdtime;
+        case kGlobalU:
+            return g.u;
+        case kGlobalV:
+            return g.v;
+        case kGlobalDu:
+            return g.du;
+        case kGlobalDv:
+            return g.dv;
+        case kGlobalS:
+            return g.s;
+        case kGlobalT:
+            return g.t;
+        case kGlobalCs:
+            return g.Cs;
+        case kGlobalOs:
+            return g.Os;
+        case kGlobalCi:
+            return g.Ci;
+        case kGlobalOi:
+            return g.Oi ? g.Oi : g.Os;
+        case kGlobalPs:
+            return g.Ps;
+        default:
+            return nullptr;
     }
 }
 
@@ -409,15 +444,28 @@ void LoadGlobals(ExecState& x, const ShaderGlobals& g) {
         float uniform[3] = {0, 0, 0};
         const float* defaults = zeros.data();
         switch (id) {
-            case kGlobalE: defaults = g.E; break;
-            case kGlobalNcomps: uniform[0] = float(x.colorComponents), defaults = uniform; break;
-            case kGlobalTime: uniform[0] = g.time, defaults = uniform; break;
-            case kGlobalDtime: uniform[0] = g.dtime, defaults = uniform; break;
-            case kGlobalAlpha: uniform[0] = g.alpha, defaults = uniform; break;
+            case kGlobalE:
+                defaults = g.E;
+                break;
+            case kGlobalNcomps:
+                uniform[0] = float(x.colorComponents), defaults = uniform;
+                break;
+            case kGlobalTime:
+                uniform[0] = g.time, defaults = uniform;
+                break;
+            case kGlobalDtime:
+                uniform[0] = g.dtime, defaults = uniform;
+                break;
+            case kGlobalAlpha:
+                uniform[0] = g.alpha, defaults = uniform;
+                break;
             case kGlobalCs:
             case kGlobalOs:
-            case kGlobalOi: defaults = ones.data(); break;
-            default: break;
+            case kGlobalOi:
+                defaults = ones.data();
+                break;
+            default:
+                break;
         }
         LoadRegister(x, r, GlobalSource(id, g), defaults);
     }
@@ -427,7 +475,8 @@ void LoadPresets(ExecState& x, const ShaderGlobals& g) {
     for (const Preset& preset : x.program->presets) {
         const Register& reg = x.program->regs[preset.reg];
         if (reg.isString) {
-            for (size_t k = 0; k < preset.strings.size(); ++k) x.Str(preset.reg, int(k)) = preset.strings[k];
+            for (size_t k = 0; k < preset.strings.size(); ++k)
+                x.Str(preset.reg, int(k)) = preset.strings[k];
             continue;
         }
         const ShaderGlobals::Primvar* primvar = nullptr;

@@ -54,14 +54,14 @@ struct ShaderParam {
 };
 
 struct CompileOptions {
-    std::vector<std::string> includeDirs;                       // for #include "..." and <...>
+    std::vector<std::string> includeDirs;                      // for #include "..." and <...>
     std::vector<std::pair<std::string, std::string>> defines;  // -D name=value
-    int colorComponents = 3;                                    // ColorSamples
+    int colorComponents = 3;                                   // ColorSamples
 };
 
 // A compiled shader: immutable and shared by all its instances.
 class Shader {
-public:
+  public:
     ShaderType Type() const { return type_; }
     const std::string& Name() const { return name_; }
     const std::string& File() const { return file_; }
@@ -74,11 +74,9 @@ public:
     // The bytecode as text, one instruction per line (for `gonio shader --code` and tests).
     std::string Disassemble() const;
 
-private:
-    friend std::shared_ptr<const Shader> CompileShaderSource(const std::string&,
-                                                             const std::string&,
-                                                             const CompileOptions&,
-                                                             Diagnostics&);
+  private:
+    friend std::shared_ptr<const Shader> CompileShaderSource(const std::string&, const std::string&,
+                                                             const CompileOptions&, Diagnostics&);
     ShaderType type_ = ShaderType::Surface;
     std::string name_, file_;
     int colorComponents_ = 3;
@@ -99,7 +97,7 @@ std::shared_ptr<const Shader> CompileShaderSource(const std::string& source,
 
 // Finds NAME.sl on the shader search path and compiles each file once per run.
 class ShadingSystem {
-public:
+  public:
     explicit ShadingSystem(Diagnostics& diagnostics, int colorComponents = 3);
 
     // Colon-separated folders; '&' stands for the previous path (initially "."). Also used as
@@ -111,7 +109,7 @@ public:
     // (not found, compile errors) are reported once, at `where`; then nullptr.
     std::shared_ptr<const Shader> Load(const std::string& name, const FileLoc& where);
 
-private:
+  private:
     Diagnostics& diagnostics_;
     int colorComponents_;
     std::vector<std::string> searchPath_{"."};
@@ -121,7 +119,7 @@ private:
 
 // A shader with parameter values: the master's code specialised to the instance's constants.
 class ShaderInstance {
-public:
+  public:
     explicit ShaderInstance(std::shared_ptr<const Shader> shader);
     ~ShaderInstance();
 
@@ -157,7 +155,7 @@ public:
     // ShaderExecutor::Output can read them (`gonio shade --print`). Call before Specialize.
     void KeepVariables() { keepVariables_ = true; }
 
-private:
+  private:
     friend class ShaderExecutor;
     struct Override {
         std::vector<float> floats;
@@ -200,7 +198,7 @@ struct ExecState;  // runtime/interpreter.h
 
 // Runs instances over batches. One per thread: it keeps its register memory between runs.
 class ShaderExecutor {
-public:
+  public:
     ShaderExecutor();
     ~ShaderExecutor();
 
@@ -210,8 +208,8 @@ public:
 
     // Runs a light shader for the surface points globals.Ps (and the light's own P, N, ...),
     // and fills `result` as illuminance sees it: L from the surface point to the light.
-    bool RunLight(ShaderInstance& instance, const ShaderGlobals& globals,
-                  ShadingContext& context, LightResult* result);
+    bool RunLight(ShaderInstance& instance, const ShaderGlobals& globals, ShadingContext& context,
+                  LightResult* result);
 
     // After Run: a global ("Ci", "Oi", "P", "N", "Cl", "L", ...) or a parameter (output
     // parameters are the shader's AOVs) by name; data == nullptr if there is none. A uniform
@@ -219,7 +217,7 @@ public:
     FloatArg Output(const std::string& name) const;
     const std::string* OutputString(const std::string& name) const;
 
-private:
+  private:
     std::unique_ptr<ExecState> state_;
 };
 

@@ -15,8 +15,8 @@ void SimpleShadingContext::BeginBatch(const ShaderGlobals& globals, int colorCom
 }
 
 bool SimpleShadingContext::CurrentFromSpace(const std::string& space, int, Imath::M44f* m) const {
-    static const char* const kKnown[] = {"current", "camera", "world", "object", "shader",
-                                         "screen",  "raster", "NDC"};
+    static const char* const kKnown[] = {"current", "camera", "world",  "object",
+                                         "shader",  "screen", "raster", "NDC"};
     m->makeIdentity();
     return std::find_if(std::begin(kKnown), std::end(kKnown),
                         [&](const char* k) { return space == k; }) != std::end(kKnown);
@@ -52,8 +52,8 @@ bool SimpleShadingContext::Texture(const std::string& name, int, int channels, c
 bool SimpleShadingContext::Environment(const std::string& name, int, int channels, const float*,
                                        const uint8_t*, float* out) {
     std::fill_n(out, size_t(channels) * n_, 0.0f);
-    RuntimeWarning("environment:" + name, "gonio shade has no environment maps: '" + name +
-                                              "' is black");
+    RuntimeWarning("environment:" + name,
+                   "gonio shade has no environment maps: '" + name + "' is black");
     return false;
 }
 
@@ -66,8 +66,8 @@ void SimpleShadingContext::Trace(const float*, const float*, const uint8_t*, flo
     std::fill_n(out, size_t(colorComponents_) * n_, 0.0f);  // nothing to hit
 }
 
-bool SimpleShadingContext::Attribute(const std::string&, const TypeSpec&, int,
-                                     std::vector<float>*, std::string*) const {
+bool SimpleShadingContext::Attribute(const std::string&, const TypeSpec&, int, std::vector<float>*,
+                                     std::string*) const {
     return false;
 }
 
@@ -99,8 +99,6 @@ void SimpleShadingContext::RuntimeWarning(const std::string& key, const std::str
     diagnostics_.WarningOnce(key + message, loc, message);
 }
 
-void SimpleShadingContext::Print(const std::string& text) {
-    std::fputs(text.c_str(), printSink_);
-}
+void SimpleShadingContext::Print(const std::string& text) { std::fputs(text.c_str(), printSink_); }
 
 }  // namespace gonio::sl

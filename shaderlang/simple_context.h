@@ -15,7 +15,7 @@
 namespace gonio::sl {
 
 class SimpleShadingContext : public ShadingContext {
-public:
+  public:
     SimpleShadingContext(Diagnostics& diagnostics, std::FILE* printSink = stdout)
         : diagnostics_(diagnostics), printSink_(printSink) {}
 
@@ -48,7 +48,7 @@ public:
     std::vector<int>& UNeighbourTable() { return uNeighbours_; }
     std::vector<int>& VNeighbourTable() { return vNeighbours_; }
 
-private:
+  private:
     Diagnostics& diagnostics_;
     std::FILE* printSink_;
     std::vector<std::shared_ptr<ShaderInstance>> lights_;

@@ -4,14 +4,22 @@ namespace gonio::sl {
 
 const char* ToString(BaseType base) {
     switch (base) {
-        case BaseType::Void: return "void";
-        case BaseType::Float: return "float";
-        case BaseType::String: return "string";
-        case BaseType::Color: return "color";
-        case BaseType::Point: return "point";
-        case BaseType::Vector: return "vector";
-        case BaseType::Normal: return "normal";
-        case BaseType::Matrix: return "matrix";
+        case BaseType::Void:
+            return "void";
+        case BaseType::Float:
+            return "float";
+        case BaseType::String:
+            return "string";
+        case BaseType::Color:
+            return "color";
+        case BaseType::Point:
+            return "point";
+        case BaseType::Vector:
+            return "vector";
+        case BaseType::Normal:
+            return "normal";
+        case BaseType::Matrix:
+            return "matrix";
     }
     return "?";
 }

@@ -54,20 +54,15 @@ V3f FromLocal(const V3f& n, float cosTheta, float phi) {
     return (t * std::cos(phi) + s * std::sin(phi)) * sinTheta + n * cosTheta;
 }
 
-float MicroBrdf::Specular(const V3f& n, const V3f& wi, const V3f& wo) const {
-    const float cosAlpha = Mirror(n, wi).dot(wo);
-    if (ks <= 0 || cosAlpha <= 0) return 0;
-    return ks * (exponent + 2) / (2 * kPi) * std::pow(cosAlpha, exponent);
-}
-
-float MicroBrdf::Pdf(const V3f& n, const V3f& wi, const V3f& wo) const {
+MicroBrdf::Value MicroBrdf::Evaluate(const V3f& n, const V3f& wi, const V3f& wo) const {
     const float total = kd + ks;
-    if (total <= 0) return 0;
+    if (total <= 0) return {0, 0};
     const float cosTheta = std::max(0.0f, n.dot(wo));
-    const float cosAlpha = std::max(0.0f, Mirror(n, wi).dot(wo));
+    const float cosAlpha = Mirror(n, wi).dot(wo);
+    const float lobe = ks > 0 && cosAlpha > 0 ? std::pow(cosAlpha, exponent) : 0.0f;
     // thesis eq. 3.16 for the specular lobe, cos θ/π for the diffuse one
-    return kd / total * cosTheta / kPi +
-           ks / total * (exponent + 1) / (2 * kPi) * std::pow(cosAlpha, exponent);
+    return {ks * (exponent + 2) / (2 * kPi) * lobe,
+            kd / total * cosTheta / kPi + ks / total * (exponent + 1) / (2 * kPi) * lobe};
 }
 
 V3f MicroBrdf::Sample(const V3f& n, const V3f& wi, float u0, float u1, float u2) const {

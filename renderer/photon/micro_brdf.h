@@ -13,13 +13,15 @@ namespace gonio {
 struct MicroBrdf {
     float kd = 1, ks = 0, exponent = 10;
 
-    // The lobe-mixture pdf per steradian of ωo (both unit, n the side's normal, wi towards the
-    // light). Directions below the surface keep their pdf: the sampler may pick them and the
-    // tracer absorbs those photons, which is what makes the normalised Phong lose energy at
-    // grazing incidence.
-    float Pdf(const Imath::V3f& n, const Imath::V3f& wi, const Imath::V3f& wo) const;
-    // The specular lobe value ks·(n+2)/(2π)·cosⁿα (1/sr); the diffuse one is kd·Cs/π.
-    float Specular(const Imath::V3f& n, const Imath::V3f& wi, const Imath::V3f& wo) const;
+    // The specular lobe value ks·(n+2)/(2π)·cosⁿα (1/sr; the diffuse one is kd·Cs/π) and the
+    // lobe-mixture pdf per steradian of ωo (all unit, n the side's normal, wi towards the
+    // light), sharing one cosⁿα. Directions below the surface keep their pdf: the sampler may
+    // pick them and the tracer absorbs those photons, which is what makes the normalised Phong
+    // lose energy at grazing incidence.
+    struct Value {
+        float specular, pdf;
+    };
+    Value Evaluate(const Imath::V3f& n, const Imath::V3f& wi, const Imath::V3f& wo) const;
     // Draws ωo from uniform numbers u0 (lobe), u1, u2 (direction).
     Imath::V3f Sample(const Imath::V3f& n, const Imath::V3f& wi, float u0, float u1,
                       float u2) const;

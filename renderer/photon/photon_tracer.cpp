@@ -20,6 +20,7 @@ using Imath::V3f;
 
 constexpr float kPi = 3.14159265358979f;
 constexpr uint64_t kBatch = 4096;
+constexpr int kFirstColumns = 5;  // θ_in φ_in θ_out φ_out p_in, then the colour
 // A periodic ray that crosses this many tile walls without hitting or leaving the slab of the
 // geometry runs (almost) horizontally through it: counted with the bounce-limit photons.
 constexpr int kMaxWraps = 10000;
@@ -92,8 +93,11 @@ V3f BeamOrigin(const TraceContext& c, const V3f& x, const V3f& wIn) {
     return V3f(wrap(x.x + s * wIn.x), wrap(x.y + s * wIn.y), static_cast<float>(x.z + s * wIn.z));
 }
 
+// The paths [first, first + kBatch): their rows go to the batch's own slice of the result
+// buffer (room for every path to escape), compacted in path order once all batches are done.
 struct Batch {
-    std::vector<float> rows;
+    float* rows = nullptr;
+    size_t values = 0;
     PhotonStats stats;
 };
 
@@ -169,13 +173,12 @@ class PathTracer {
         const V3f wo = brdf.Sample(n, wi, u0, u1, u2);
         const float cosOut = n.dot(wo);
         if (wo.dot(ng) <= 0 || cosOut <= 0) return V3f(0);
-        const float pdf = brdf.Pdf(n, wi, wo);
-        if (!(pdf > 0)) return V3f(0);
-        const float specular = brdf.Specular(n, wi, wo);
+        const MicroBrdf::Value value = brdf.Evaluate(n, wi, wo);
+        if (!(value.pdf > 0)) return V3f(0);
         bool alive = false;
         for (int k = 0; k < c_.ncomps; ++k) {
             const float cs = k < int(sp.Cs.size()) ? sp.Cs[k] : 1.0f;
-            beta_[k] *= (brdf.kd * cs / kPi + specular) * cosOut / pdf;
+            beta_[k] *= (brdf.kd * cs / kPi + value.specular) * cosOut / value.pdf;
             alive |= beta_[k] > 0;
         }
         return alive ? wo : V3f(0);
@@ -193,9 +196,11 @@ class PathTracer {
             phiIn = 0;
         }
         phiOut -= 2 * kPi * std::floor(phiOut / (2 * kPi));
-        out_.rows.insert(out_.rows.end(),
-                         {thetaIn, phiIn, std::acos(std::min(1.0f, wo.z)), phiOut, pIn});
-        out_.rows.insert(out_.rows.end(), beta_.begin(), beta_.end());
+        float* row = out_.rows + out_.values;
+        row[0] = thetaIn, row[1] = phiIn, row[2] = std::acos(std::min(1.0f, wo.z));
+        row[3] = phiOut, row[4] = pIn;
+        std::copy(beta_.begin(), beta_.end(), row + kFirstColumns);
+        out_.values += kFirstColumns + c_.ncomps;
         for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyUp[k] += beta_[k];
     }
 
@@ -249,12 +254,17 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     c.zMin = bounds.min.z - 10 * c.offset;
     c.zMax = bounds.max.z + 10 * c.offset;
 
+    PhotonTraceResult result;
+    result.ncomps = c.ncomps;
+    const size_t stride = kFirstColumns + c.ncomps;
+    result.rows.resize(settings.paths * stride);
     const uint64_t numBatches = (settings.paths + kBatch - 1) / kBatch;
     std::vector<Batch> batches(numBatches);
     Progress progress("BRDFLight", settings.paths, settings.progress);
     tbb::parallel_for(uint64_t(0), numBatches, [&](uint64_t b) {
         Batch& batch = batches[b];
         batch.stats.energyUp.assign(c.ncomps, 0.0);
+        batch.rows = result.rows.data() + b * kBatch * stride;
         PathTracer tracer(c, batch);
         const uint64_t first = b * kBatch, last = std::min(settings.paths, first + kBatch);
         for (uint64_t path = first; path < last; ++path) tracer.Trace(path);
@@ -262,18 +272,15 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     });
     progress.Done();
 
-    PhotonTraceResult result;
-    result.ncomps = c.ncomps;
     result.stats.paths = settings.paths;
     result.stats.energyUp.assign(c.ncomps, 0.0);
     size_t values = 0;
-    for (const Batch& batch : batches) values += batch.rows.size();
-    result.rows.reserve(values);
-    for (Batch& batch : batches) {
-        result.rows.insert(result.rows.end(), batch.rows.begin(), batch.rows.end());
+    for (const Batch& batch : batches) {  // slices only move down: copying forwards is safe
+        std::copy(batch.rows, batch.rows + batch.values, result.rows.data() + values);
+        values += batch.values;
         Accumulate(batch.stats, &result.stats);
-        std::vector<float>().swap(batch.rows);
     }
+    result.rows.resize(values);
     result.stats.threads = static_cast<int>(std::min<size_t>(
         tbb::this_task_arena::max_concurrency(),
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));

@@ -301,6 +301,9 @@ RTCGeometry RayScene::Impl::MakeCurves(const CurveSet& curves, const M44f& m) {
                                                                RTC_FORMAT_UINT, sizeof(unsigned),
                                                                curves.segmentFirst.size()));
     std::memcpy(idx, curves.segmentFirst.data(), curves.segmentFirst.size() * sizeof(unsigned));
+    // Embree draws flat curves as a few straight pieces per segment by default (4), which shows
+    // as corners on long segments; 32 is smooth at any size we render.
+    rtcSetGeometryTessellationRate(g, 32.f);
     return g;
 }
 

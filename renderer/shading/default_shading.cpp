@@ -15,7 +15,7 @@ class DefaultWorker : public ShadingWorker {
             const float facing = std::fabs(sp.N.dot(batch.incident[i].normalized()));
             for (int c = 0; c < ncomps_; ++c) {
                 Oi[i * ncomps_ + c] = sp.Os[c];
-                Ci[i * ncomps_ + c] = sp.Os[c] * sp.Cs[c] * (0.2f + 0.8f * facing);
+                Ci[i * ncomps_ + c] = sp.Os[c] * sp.Cs[c] * (0.2f + 0.8f * facing * facing);
             }
         }
     }

@@ -34,8 +34,9 @@ class SurfaceShading {
     virtual std::unique_ptr<ShadingWorker> MakeWorker() const = 0;
 };
 
-// The RenderMan default surface, for frames without shaders: a facing ratio,
-// Ci = Os·Cs·(Ka + Kd·|N·I|) with Ka = 0.2, Kd = 0.8.
+// The default surface of primitives without a Surface shader: a squared facing ratio,
+// Ci = Os·Cs·(Ka + Kd·(N·I)²) with Ka = 0.2, Kd = 0.8 and N, I unit vectors, as Aqsis's
+// defaultsurface (RISpec leaves the default surface to the implementation).
 std::unique_ptr<SurfaceShading> MakeDefaultSurfaceShading(int colorComponents);
 
 }  // namespace gonio

@@ -58,7 +58,7 @@ struct Node {
     std::vector<Node*> kids;
     std::string name;
     float number = 0;
-    int op = 0;     // operator, break/continue level, shader type
+    int op = 0;  // operator, break/continue level, shader type
     // Declarations and casts.
     TypeSpec declType;
     Detail detail = Detail::Varying;
@@ -67,13 +67,13 @@ struct Node {
     bool isExtern = false;
 
     // Filled by the type checker.
-    TypeSpec type;               // Void for statements
-    bool varying = false;        // the value differs between points
-    bool boolean = false;        // a relation: only usable as a condition
-    Symbol* symbol = nullptr;    // Identifier, VarDecl: the variable
-    int builtin = -1;            // Call: the BuiltinTable() row
-    Node* function = nullptr;    // Call: the user FunctionDef
-    bool hasError = false;       // an error was reported here: no follow-on errors
+    TypeSpec type;             // Void for statements
+    bool varying = false;      // the value differs between points
+    bool boolean = false;      // a relation: only usable as a condition
+    Symbol* symbol = nullptr;  // Identifier, VarDecl: the variable
+    int builtin = -1;          // Call: the BuiltinTable() row
+    Node* function = nullptr;  // Call: the user FunctionDef
+    bool hasError = false;     // an error was reported here: no follow-on errors
 };
 
 // The result of parsing one preprocessed file.

@@ -25,7 +25,10 @@ bool IsLightLoop(NodeKind k) {
 
 CodeGenerator::CodeGenerator(const SyntaxTree& tree, const TypeChecker& checker,
                              Diagnostics& diagnostics, int colorComponents)
-    : tree_(tree), checker_(checker), diagnostics_(diagnostics), colorComponents_(colorComponents) {}
+    : tree_(tree),
+      checker_(checker),
+      diagnostics_(diagnostics),
+      colorComponents_(colorComponents) {}
 
 int CodeGenerator::NewReg(const TypeSpec& type, bool varying, const std::string& name,
                           bool temporary) {
@@ -426,9 +429,8 @@ int CodeGenerator::Expr(Node* e) {
         case NodeKind::Unary: {
             int a = Expr(e->kids[0]);
             int d = NewReg(e->type, e->varying);
-            Emit(e->op == '!' ? Op::Not : Op::Neg, {d, e->op == '!' && !e->kids[0]->boolean
-                                                           ? Condition(e->kids[0])
-                                                           : a});
+            Emit(e->op == '!' ? Op::Not : Op::Neg,
+                 {d, e->op == '!' && !e->kids[0]->boolean ? Condition(e->kids[0]) : a});
             return d;
         }
         case NodeKind::Binary:
@@ -496,8 +498,12 @@ int CodeGenerator::Binary(Node* e) {
     int d = NewReg(e->type, e->varying);
     const bool strings = an->type.base == BaseType::String;
     switch (op) {
-        case '+': Emit(Op::Add, {d, a, b}); break;
-        case '-': Emit(Op::Sub, {d, a, b}); break;
+        case '+':
+            Emit(Op::Add, {d, a, b});
+            break;
+        case '-':
+            Emit(Op::Sub, {d, a, b});
+            break;
         case '*':
             Emit(an->type.base == BaseType::Matrix && bn->type.base == BaseType::Matrix ? Op::MatMul
                                                                                         : Op::Mul,
@@ -506,15 +512,32 @@ int CodeGenerator::Binary(Node* e) {
         case '/':
             Emit(bn->type.base == BaseType::Matrix ? Op::MatDiv : Op::Div, {d, a, b});
             break;
-        case '.': Emit(Op::Dot, {d, a, b}); break;
-        case '^': Emit(Op::Cross, {d, a, b}); break;
-        case '<': Emit(Op::Lt, {d, a, b}); break;
-        case '>': Emit(Op::Gt, {d, a, b}); break;
-        case kOpLe: Emit(Op::Le, {d, a, b}); break;
-        case kOpGe: Emit(Op::Ge, {d, a, b}); break;
-        case kOpEq: Emit(strings ? Op::StrEq : Op::Eq, {d, a, b}); break;
-        case kOpNe: Emit(strings ? Op::StrNe : Op::Ne, {d, a, b}); break;
-        default: break;
+        case '.':
+            Emit(Op::Dot, {d, a, b});
+            break;
+        case '^':
+            Emit(Op::Cross, {d, a, b});
+            break;
+        case '<':
+            Emit(Op::Lt, {d, a, b});
+            break;
+        case '>':
+            Emit(Op::Gt, {d, a, b});
+            break;
+        case kOpLe:
+            Emit(Op::Le, {d, a, b});
+            break;
+        case kOpGe:
+            Emit(Op::Ge, {d, a, b});
+            break;
+        case kOpEq:
+            Emit(strings ? Op::StrEq : Op::Eq, {d, a, b});
+            break;
+        case kOpNe:
+            Emit(strings ? Op::StrNe : Op::Ne, {d, a, b});
+            break;
+        default:
+            break;
     }
     return d;
 }

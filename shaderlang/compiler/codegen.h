@@ -14,22 +14,22 @@
 namespace gonio::sl {
 
 class CodeGenerator {
-public:
+  public:
     CodeGenerator(const SyntaxTree& tree, const TypeChecker& checker, Diagnostics& diagnostics,
                   int colorComponents);
 
     // Generates `shader`'s code into `program`; false after reporting errors (recursion).
     bool Generate(Node* shader, Program* program);
 
-private:
+  private:
     struct LoopFrame {
         int running;  // mask entry of the points still looping; the body's entry is running + 1
         int region;
     };
     struct FunctionFrame {
-        int entry;       // mask entry of the inlined body
+        int entry;  // mask entry of the inlined body
         int region;
-        int result;      // register, -1 for void
+        int result;  // register, -1 for void
         TypeSpec type;
         size_t loopBase;  // loops_ index where this function's own loops start
     };

@@ -41,7 +41,8 @@ void Operands(const Program& p, const Instr& in, std::vector<int>* reads,
         for (int k = 0; k < list[1]; ++k) {
             reads->push_back(list[3 + k]);
             char code = *sig && *sig != '*' ? *sig : 0;
-            if (code && std::isupper(static_cast<unsigned char>(code))) writes->push_back(list[3 + k]);
+            if (code && std::isupper(static_cast<unsigned char>(code)))
+                writes->push_back(list[3 + k]);
             if (code) sig += sig[1] == '[' ? 3 : 1;
         }
         return;
@@ -62,13 +63,14 @@ bool Foldable(const Program& p, const Instr& in) {
     const Op op = Op(in.op);
     if (op == Op::Call) {
         const BuiltinInfo& info = BuiltinTable()[p.callArgs[in.extra]];
-        return !(info.flags & kRunTimeOnly) && !HasOutputArgs(info) && p.callArgs[in.extra + 2] >= 0;
+        return !(info.flags & kRunTimeOnly) && !HasOutputArgs(info) &&
+               p.callArgs[in.extra + 2] >= 0;
     }
     return (OpTable(op).flags & kOpPure) && (OpTable(op).flags & kOpWrites);
 }
 
 class Optimizer {
-public:
+  public:
     Optimizer(Program& p, const OptimizeOptions& o) : p_(p), o_(o) {}
 
     void Run() {
@@ -83,7 +85,7 @@ public:
         MarkUsed();
     }
 
-private:
+  private:
     void Fold();
     void FoldBranch(Instr& in);
     void RemoveUnreachable();
@@ -291,8 +293,9 @@ void Optimizer::InferDetail() {
             if (writes.empty()) continue;
             bool v = false;
             for (int r : reads) v = v || p_.regs[r].varying;
-            if (op == Op::Call && (BuiltinTable()[p_.callArgs[in.extra]].flags &
-                                   (kVaryingResult | kReadsGlobals | kUsesLights | kNeedsDerivatives))) {
+            if (op == Op::Call &&
+                (BuiltinTable()[p_.callArgs[in.extra]].flags &
+                 (kVaryingResult | kReadsGlobals | kUsesLights | kNeedsDerivatives))) {
                 v = true;
             }
             for (int w : writes) {
@@ -327,8 +330,8 @@ void Optimize(Program& program, const OptimizeOptions& options) {
     Optimizer(program, options).Run();
 }
 
-bool EvaluateDefault(const Program& p, int param, int colorComponents,
-                     std::vector<float>* floats, std::vector<std::string>* strings) {
+bool EvaluateDefault(const Program& p, int param, int colorComponents, std::vector<float>* floats,
+                     std::vector<std::string>* strings) {
     if (param < 0 || param >= int(p.params.size())) return false;
     const ParamCode& code = p.params[param];
     std::vector<bool> written(p.regs.size(), false);
@@ -336,7 +339,8 @@ bool EvaluateDefault(const Program& p, int param, int colorComponents,
     std::vector<int> reads, writes;
     for (int i = code.initBegin; i < code.initEnd; ++i) {
         const Instr& in = p.code[i];
-        if (!Foldable(p, in) && Op(in.op) != Op::IndexWrite && Op(in.op) != Op::SetComp) return false;
+        if (!Foldable(p, in) && Op(in.op) != Op::IndexWrite && Op(in.op) != Op::SetComp)
+            return false;
         Operands(p, in, &reads, &writes);
         for (int r : reads) {
             if (!p.regs[r].constant && !written[r]) return false;

@@ -15,8 +15,8 @@ namespace gonio::sl {
 struct OptimizeOptions {
     int colorComponents = 3;
     bool fold = true;
-    bool keepNamed = false;    // keep top-level variables alive (for `gonio shade --print`)
-    std::vector<int> pinned;   // registers never made constant (overridable parameters)
+    bool keepNamed = false;   // keep top-level variables alive (for `gonio shade --print`)
+    std::vector<int> pinned;  // registers never made constant (overridable parameters)
 };
 
 void Optimize(Program& program, const OptimizeOptions& options);

@@ -56,7 +56,7 @@ std::string StripComments(const std::string& text) {
 }
 
 class Preprocessor {
-public:
+  public:
     Preprocessor(const PreprocessOptions& options, Diagnostics& diagnostics)
         : options_(options), diagnostics_(diagnostics) {
         for (const auto& [name, value] : options.defines) {
@@ -68,7 +68,7 @@ public:
     std::string Output() const { return out_.str(); }
     int Errors() const { return errors_; }
 
-private:
+  private:
     void Error(int line, int column, const std::string& message) {
         ++errors_;
         diagnostics_.Error(FileLoc{file_, line, column}, message);
@@ -201,7 +201,8 @@ void Preprocessor::Directive(const std::string& text, int line, int depth, const
                 macro.functionLike = true;
                 size_t close = arg.find(')', i);
                 if (close == std::string::npos) {
-                    Error(line, 1, "missing ')' in the parameter list of macro '" + macroName + "'");
+                    Error(line, 1,
+                          "missing ')' in the parameter list of macro '" + macroName + "'");
                     close = arg.size();
                 }
                 std::stringstream params(arg.substr(i + 1, close - i - 1));
@@ -244,7 +245,8 @@ void Preprocessor::Directive(const std::string& text, int line, int depth, const
                 return;
             }
         }
-    } else if (name == "line" || (!rest.empty() && std::isdigit(static_cast<unsigned char>(rest[0])))) {
+    } else if (name == "line" ||
+               (!rest.empty() && std::isdigit(static_cast<unsigned char>(rest[0])))) {
         out_ << "#line " << (name == "line" ? arg : rest) << '\n';
         return;
     } else if (name == "error") {
@@ -353,7 +355,7 @@ std::string Preprocessor::Expand(const std::string& text, std::set<std::string>&
 
 // Integer expressions of #if / #elif (C's operators and precedences).
 class ConditionParser {
-public:
+  public:
     explicit ConditionParser(const std::string& text) : s_(text) {}
     bool Parse(long* value) {
         *value = Ternary();
@@ -361,7 +363,7 @@ public:
         return ok_ && pos_ == s_.size();
     }
 
-private:
+  private:
     void Skip() {
         while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
     }
@@ -390,9 +392,16 @@ private:
         return c;
     }
     long Binary(int level) {
-        static const std::vector<std::vector<const char*>> levels = {
-            {"||"}, {"&&"}, {"|"}, {"^"}, {"&"}, {"==", "!="}, {"<=", ">=", "<", ">"},
-            {"<<", ">>"}, {"+", "-"}, {"*", "/", "%"}};
+        static const std::vector<std::vector<const char*>> levels = {{"||"},
+                                                                     {"&&"},
+                                                                     {"|"},
+                                                                     {"^"},
+                                                                     {"&"},
+                                                                     {"==", "!="},
+                                                                     {"<=", ">=", "<", ">"},
+                                                                     {"<<", ">>"},
+                                                                     {"+", "-"},
+                                                                     {"*", "/", "%"}};
         if (level == int(levels.size())) return Unary();
         long left = Binary(level + 1);
         for (bool more = true; more;) {
@@ -518,8 +527,7 @@ bool ReadTextFile(const std::string& path, std::string* text) {
 }
 
 bool Preprocess(const std::string& source, const std::string& fileName,
-                const PreprocessOptions& options, std::string* output,
-                Diagnostics& diagnostics) {
+                const PreprocessOptions& options, std::string* output, Diagnostics& diagnostics) {
     Preprocessor pp(options, diagnostics);
     pp.ProcessFile(source, fileName, 0);
     *output = pp.Output();

@@ -22,8 +22,7 @@ struct PreprocessOptions {
 // Preprocesses `source`, whose name for messages and relative includes is `fileName`. Returns
 // false (after reporting) if there were errors.
 bool Preprocess(const std::string& source, const std::string& fileName,
-                const PreprocessOptions& options, std::string* output,
-                Diagnostics& diagnostics);
+                const PreprocessOptions& options, std::string* output, Diagnostics& diagnostics);
 
 // Reads a whole file; false if it cannot be read.
 bool ReadTextFile(const std::string& path, std::string* text);

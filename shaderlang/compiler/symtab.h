@@ -29,7 +29,7 @@ struct Symbol {
 };
 
 class SymbolTable {
-public:
+  public:
     void Push() { scopes_.emplace_back(); }
     void Pop() { scopes_.pop_back(); }
     // False if the name is already declared in the innermost scope.
@@ -62,7 +62,7 @@ public:
         return symbols_.back().get();
     }
 
-private:
+  private:
     struct Scope {
         std::unordered_map<std::string, Symbol*> vars;
         std::unordered_map<std::string, std::vector<Node*>> functions;

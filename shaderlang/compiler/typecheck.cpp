@@ -19,18 +19,26 @@ TypeSpec MakeType(BaseType base, int length = 0) {
 }
 
 bool IsNumeric(const TypeSpec& t) {
-    return !t.IsArray() && (t.base == BaseType::Float || t.IsTriple() || t.base == BaseType::Matrix);
+    return !t.IsArray() &&
+           (t.base == BaseType::Float || t.IsTriple() || t.base == BaseType::Matrix);
 }
 
 std::string OperatorName(int op) {
     switch (op) {
-        case kOpEq: return "==";
-        case kOpNe: return "!=";
-        case kOpLe: return "<=";
-        case kOpGe: return ">=";
-        case kOpAnd: return "&&";
-        case kOpOr: return "||";
-        default: return std::string(1, char(op));
+        case kOpEq:
+            return "==";
+        case kOpNe:
+            return "!=";
+        case kOpLe:
+            return "<=";
+        case kOpGe:
+            return ">=";
+        case kOpAnd:
+            return "&&";
+        case kOpOr:
+            return "||";
+        default:
+            return std::string(1, char(op));
     }
 }
 
@@ -42,14 +50,22 @@ bool IsTexture(const std::string& name) {
 
 TypeSpec TypeOfCode(char code) {
     switch (std::tolower(static_cast<unsigned char>(code))) {
-        case 'f': return MakeType(BaseType::Float);
-        case 's': return MakeType(BaseType::String);
-        case 'c': return MakeType(BaseType::Color);
-        case 'p': return MakeType(BaseType::Point);
-        case 'v': return MakeType(BaseType::Vector);
-        case 'n': return MakeType(BaseType::Normal);
-        case 'm': return MakeType(BaseType::Matrix);
-        default: return MakeType(BaseType::Void);
+        case 'f':
+            return MakeType(BaseType::Float);
+        case 's':
+            return MakeType(BaseType::String);
+        case 'c':
+            return MakeType(BaseType::Color);
+        case 'p':
+            return MakeType(BaseType::Point);
+        case 'v':
+            return MakeType(BaseType::Vector);
+        case 'n':
+            return MakeType(BaseType::Normal);
+        case 'm':
+            return MakeType(BaseType::Matrix);
+        default:
+            return MakeType(BaseType::Void);
     }
 }
 
@@ -179,7 +195,8 @@ void TypeChecker::CheckFunctionDef(Node* f, Context outer) {
         s->functionDepth = ctx.functionDepth;
         formal->symbol = s;
         if (formal->kids[0]) Error(formal, "function parameters cannot have default values");
-        if (!symbols_.Declare(s)) Error(formal, "parameter '" + formal->name + "' is declared twice");
+        if (!symbols_.Declare(s))
+            Error(formal, "parameter '" + formal->name + "' is declared twice");
     }
     CheckBlock(f->kids[1], ctx, false);
     symbols_.Pop();
@@ -228,8 +245,8 @@ void TypeChecker::CheckDeclaration(Node* decl, Context& ctx, SymbolKind kind) {
     s->name = decl->name;
     s->kind = kind;
     s->type = decl->declType;
-    s->detail = decl->hasDetail ? decl->detail : (kind == SymbolKind::Param ? Detail::Uniform
-                                                                             : Detail::Varying);
+    s->detail = decl->hasDetail ? decl->detail
+                                : (kind == SymbolKind::Param ? Detail::Uniform : Detail::Varying);
     s->output = decl->output;
     s->decl = decl;
     s->functionDepth = ctx.functionDepth;
@@ -326,9 +343,10 @@ void TypeChecker::CheckStatement(Node* s, Context& ctx) {
         case NodeKind::Break:
         case NodeKind::Continue:
             if (s->op < 1 || s->op > ctx.loops) {
-                Error(s, std::string(s->kind == NodeKind::Break ? "break" : "continue") +
-                             (s->op > 1 ? " " + std::to_string(s->op) : "") +
-                             (ctx.loops ? " leaves more loops than enclose it" : " outside a loop"));
+                Error(s,
+                      std::string(s->kind == NodeKind::Break ? "break" : "continue") +
+                          (s->op > 1 ? " " + std::to_string(s->op) : "") +
+                          (ctx.loops ? " leaves more loops than enclose it" : " outside a loop"));
             }
             break;
         case NodeKind::Return: {
@@ -339,7 +357,8 @@ void TypeChecker::CheckStatement(Node* s, Context& ctx) {
             TypeSpec want = ctx.function->declType;
             Node* value = s->kids[0];
             if (!value) {
-                if (want.base != BaseType::Void) Error(s, "return needs a value of type " + ToString(want));
+                if (want.base != BaseType::Void)
+                    Error(s, "return needs a value of type " + ToString(want));
                 break;
             }
             CheckExpr(value, ctx, &want);
@@ -385,7 +404,8 @@ void TypeChecker::CheckLightLoop(Node* s, Context& ctx) {
             }
         }
     } else if (s->kind == NodeKind::Illuminate) {
-        if (shaderType_ != ShaderType::Light) Error(s, "illuminate is only allowed in light shaders");
+        if (shaderType_ != ShaderType::Light)
+            Error(s, "illuminate is only allowed in light shaders");
         if (argCount != 1 && argCount != 3) {
             Error(s, "illuminate expects (from) or (from, axis, angle)");
         } else {
@@ -405,7 +425,8 @@ void TypeChecker::CheckLightLoop(Node* s, Context& ctx) {
         }
     }
     for (Node* a : args) {
-        if (a->type.base == BaseType::String && a->varying) Error(a, "the category must be uniform");
+        if (a->type.base == BaseType::String && a->varying)
+            Error(a, "the category must be uniform");
     }
     Context inner = ctx;
     inner.varyingConditions += 1;
@@ -472,8 +493,8 @@ void TypeChecker::CheckExpr(Node* e, Context& ctx, const TypeSpec* expected) {
             } else if (ConversionCost(b->type, a->type, a->kind == NodeKind::Tuple) >= 0) {
                 e->type = b->type;
             } else {
-                Error(e, "the branches of ?: have different types, " + ToString(a->type) +
-                             " and " + ToString(b->type));
+                Error(e, "the branches of ?: have different types, " + ToString(a->type) + " and " +
+                             ToString(b->type));
                 e->hasError = true;
                 break;
             }
@@ -542,8 +563,7 @@ void TypeChecker::CheckIdentifier(Node* e, Context& ctx) {
     e->symbol = s;
     e->type = s->type;
     e->varying = s->detail == Detail::Varying;
-    if (ctx.function && e->varying &&
-        (s->kind == SymbolKind::Global || ext != externs_.end())) {
+    if (ctx.function && e->varying && (s->kind == SymbolKind::Global || ext != externs_.end())) {
         ctx.function->varying = true;  // the function's result depends on varying state
     }
 }
@@ -555,7 +575,8 @@ void TypeChecker::CheckTuple(Node* e, Context& ctx, const TypeSpec* expected) {
         if (k->hasError) {
             e->hasError = true;
         } else if (!NotBoolean(k) || k->type != MakeType(BaseType::Float)) {
-            if (!k->boolean) Error(k, "the elements of (a, b, c) must be floats, not " + ToString(k->type));
+            if (!k->boolean)
+                Error(k, "the elements of (a, b, c) must be floats, not " + ToString(k->type));
             e->hasError = true;
         }
     }
@@ -644,7 +665,8 @@ void TypeChecker::CheckBinary(Node* e, Context& ctx) {
     bool ma = ta.base == BaseType::Matrix, mb = tb.base == BaseType::Matrix;
     if (ma || mb) {
         bool other = ma ? tb.base == BaseType::Float || mb : ta.base == BaseType::Float || ma;
-        if (!other) return fail("cannot apply " + opName + " to " + ToString(ta) + " and " + ToString(tb));
+        if (!other)
+            return fail("cannot apply " + opName + " to " + ToString(ta) + " and " + ToString(tb));
         e->type = MakeType(BaseType::Matrix);
         return;
     }
@@ -679,11 +701,11 @@ bool TypeChecker::CheckLvalue(Node* target, Context& ctx, bool varyingValue) {
         if (s->kind == SymbolKind::Formal) {
             Error(target, "cannot assign to '" + s->name + "': it is not an output parameter");
         } else {
-            Error(target, "cannot assign to '" + s->name + "'" +
-                              (s->kind == SymbolKind::Global
-                                   ? std::string(": it is read-only in ") + ToString(shaderType_) +
-                                         " shaders"
-                                   : ""));
+            Error(target,
+                  "cannot assign to '" + s->name + "'" +
+                      (s->kind == SymbolKind::Global ? std::string(": it is read-only in ") +
+                                                           ToString(shaderType_) + " shaders"
+                                                     : ""));
         }
         return false;
     }
@@ -713,10 +735,10 @@ void TypeChecker::CheckAssign(Node* e, Context& ctx) {
         return;
     }
     if (e->op == '=') {
-        if (Coerce(value, target->type, "in the assignment to " +
-                                            std::string(target->kind == NodeKind::Identifier
-                                                            ? "'" + target->name + "'"
-                                                            : "an array element"))) {
+        if (Coerce(value, target->type,
+                   "in the assignment to " + std::string(target->kind == NodeKind::Identifier
+                                                             ? "'" + target->name + "'"
+                                                             : "an array element"))) {
             CheckLvalue(target, ctx, value->varying);
         }
         return;
@@ -729,7 +751,8 @@ void TypeChecker::CheckAssign(Node* e, Context& ctx) {
                (ta.IsPointLike() && tb.IsPointLike()) ||
                (value->kind == NodeKind::Tuple && ta.IsTriple()) ||
                (ta.base == BaseType::Matrix && (e->op == '*' || e->op == '/')));
-    if (ta.base == BaseType::Matrix && tb.base != BaseType::Matrix && tb.base != BaseType::Float) ok = false;
+    if (ta.base == BaseType::Matrix && tb.base != BaseType::Matrix && tb.base != BaseType::Float)
+        ok = false;
     if (!ok) {
         Error(e, "cannot apply '" + OperatorName(e->op) + "=' to " + ToString(ta) + " and " +
                      ToString(tb));
@@ -756,7 +779,8 @@ void TypeChecker::CheckCast(Node* e, Context& ctx) {
     }
     const TypeSpec from = operand->type;
     bool tuple = operand->kind == NodeKind::Tuple;
-    bool ok = from.base == to.base || (from.base == BaseType::Float && to.base != BaseType::String) ||
+    bool ok = from.base == to.base ||
+              (from.base == BaseType::Float && to.base != BaseType::String) ||
               (from.IsPointLike() && to.IsPointLike()) || (tuple && to.IsTriple());
     if (to.base == BaseType::Float && from.base != BaseType::Float) ok = false;
     if (!ok || from.IsArray()) {
@@ -851,8 +875,8 @@ bool TypeChecker::CheckUserCall(Node* e, const std::vector<Node*>& candidates) {
     for (size_t i = 0; i < e->kids.size(); ++i) {
         Coerce(e->kids[i], best->kids[0]->kids[i]->declType, "in the call of '" + e->name + "'");
     }
-    e->varying = e->varying || best->varying ||
-                 (best->hasDetail && best->detail == Detail::Varying);
+    e->varying =
+        e->varying || best->varying || (best->hasDetail && best->detail == Detail::Varying);
     if (best->hasDetail && best->detail == Detail::Uniform) e->varying = false;
     return true;
 }
@@ -951,7 +975,8 @@ bool TypeChecker::CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expect
         if (std::isupper(static_cast<unsigned char>(*p))) {
             CheckLvalue(a, ctx, e->varying);
         } else if (!array) {
-            Coerce(a, TypeOfCode(*p), "argument " + std::to_string(arg + 1) + " of '" + e->name + "'");
+            Coerce(a, TypeOfCode(*p),
+                   "argument " + std::to_string(arg + 1) + " of '" + e->name + "'");
         }
         if (array) p += 2;
     }

@@ -15,7 +15,7 @@ namespace gonio::sl {
 struct BuiltinInfo;
 
 class TypeChecker {
-public:
+  public:
     TypeChecker(SyntaxTree& tree, Diagnostics& diagnostics, int colorComponents);
 
     // Checks the file; returns its shader definition, or nullptr if there is none. Errors()
@@ -30,7 +30,7 @@ public:
     // each other, a tuple literal to any triple); -1 if not, else a cost (0 exact).
     static int ConversionCost(const TypeSpec& to, const TypeSpec& from, bool fromTuple);
 
-private:
+  private:
     struct Context {
         Node* function = nullptr;  // enclosing FunctionDef
         int functionDepth = 0;

@@ -38,7 +38,7 @@ const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"ncomps", BaseType::Float, false, kAll, 0},
     {"time", BaseType::Float, false, kAll, 0},
     {"dtime", BaseType::Float, false, kAll, 0},
-    {"alpha", BaseType::Float, false, kI, 0},
+    {"alpha", BaseType::Float, false, kI, kI},
 };
 
 }  // namespace

@@ -10,10 +10,33 @@
 namespace gonio::sl {
 
 enum GlobalId : int {
-    kGlobalP, kGlobalN, kGlobalNg, kGlobalI, kGlobalE, kGlobalDPdu, kGlobalDPdv, kGlobalDPdtime,
-    kGlobalU, kGlobalV, kGlobalDu, kGlobalDv, kGlobalS, kGlobalT, kGlobalCs, kGlobalOs,
-    kGlobalCi, kGlobalOi, kGlobalL, kGlobalCl, kGlobalOl, kGlobalPs, kGlobalNcomps,
-    kGlobalTime, kGlobalDtime, kGlobalAlpha, kGlobalCount
+    kGlobalP,
+    kGlobalN,
+    kGlobalNg,
+    kGlobalI,
+    kGlobalE,
+    kGlobalDPdu,
+    kGlobalDPdv,
+    kGlobalDPdtime,
+    kGlobalU,
+    kGlobalV,
+    kGlobalDu,
+    kGlobalDv,
+    kGlobalS,
+    kGlobalT,
+    kGlobalCs,
+    kGlobalOs,
+    kGlobalCi,
+    kGlobalOi,
+    kGlobalL,
+    kGlobalCl,
+    kGlobalOl,
+    kGlobalPs,
+    kGlobalNcomps,
+    kGlobalTime,
+    kGlobalDtime,
+    kGlobalAlpha,
+    kGlobalCount
 };
 
 struct GlobalVarInfo {

@@ -11,7 +11,7 @@
 namespace gonio::sl {
 
 class GlobalsView {
-public:
+  public:
     virtual ~GlobalsView() = default;
     // The global named `name` as the shader sees it now; data == nullptr when the shader type
     // has no such global (e.g. "Ps" in a surface shader).

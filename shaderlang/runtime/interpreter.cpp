@@ -58,7 +58,8 @@ void ExecState::Prepare(const Program& p, int points, int ncomps) {
             for (int k = 0; k < reg.width; ++k) strings[r][k] = p.constStrings[reg.constOffset + k];
         } else if (reg.varying) {
             for (int c = 0; c < reg.width; ++c) {
-                std::fill_n(&arena[offsets[r] + size_t(c) * n], n, p.constFloats[reg.constOffset + c]);
+                std::fill_n(&arena[offsets[r] + size_t(c) * n], n,
+                            p.constFloats[reg.constOffset + c]);
             }
         } else {
             std::memcpy(&arena[offsets[r]], &p.constFloats[reg.constOffset],

@@ -20,13 +20,13 @@ namespace gonio::sl {
 // Run-time warnings are reported once per source line (and message) for all instances of a
 // shader, whatever the thread.
 class RuntimeWarnings {
-public:
+  public:
     bool First(int loc, const std::string& message) {
         std::lock_guard<std::mutex> lock(mutex_);
         return seen_.insert(std::to_string(loc) + message).second;
     }
 
-private:
+  private:
     std::mutex mutex_;
     std::set<std::string> seen_;
 };
@@ -55,12 +55,12 @@ struct ExecState final : GlobalsView {
     int n = 0;
     int colorComponents = 3;
     std::vector<float> arena;
-    std::vector<size_t> offsets;                   // per register, into arena
+    std::vector<size_t> offsets;                    // per register, into arena
     std::vector<std::vector<std::string>> strings;  // per string register
     std::vector<MaskEntry> masks;
     ShadingContext* context = nullptr;
     RuntimeWarnings* warnings = nullptr;
-    bool foldMode = false;   // constant folding: no context; a warning cancels the fold
+    bool foldMode = false;  // constant folding: no context; a warning cancels the fold
     bool warned = false;
     int pc = 0;
     // Light loops.

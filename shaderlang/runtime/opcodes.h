@@ -40,48 +40,48 @@ enum OpFlags : unsigned {
 };
 
 //        name           flags                     function
-#define GONIO_SL_OPCODES(X)                                   \
-    X(Assign,      kOpPure | kOpWrites,   OpAssign)           \
-    X(Neg,         kOpPure | kOpWrites,   OpNeg)              \
-    X(Add,         kOpPure | kOpWrites,   OpAdd)              \
-    X(Sub,         kOpPure | kOpWrites,   OpSub)              \
-    X(Mul,         kOpPure | kOpWrites,   OpMul)              \
-    X(Div,         kOpPure | kOpWrites,   OpDiv)              \
-    X(MatMul,      kOpPure | kOpWrites,   OpMatMul)           \
-    X(MatDiv,      kOpPure | kOpWrites,   OpMatDiv)           \
-    X(Dot,         kOpPure | kOpWrites,   OpDot)              \
-    X(Cross,       kOpPure | kOpWrites,   OpCross)            \
-    X(Lt,          kOpPure | kOpWrites,   OpLt)               \
-    X(Le,          kOpPure | kOpWrites,   OpLe)               \
-    X(Gt,          kOpPure | kOpWrites,   OpGt)               \
-    X(Ge,          kOpPure | kOpWrites,   OpGe)               \
-    X(Eq,          kOpPure | kOpWrites,   OpEq)               \
-    X(Ne,          kOpPure | kOpWrites,   OpNe)               \
-    X(StrEq,       kOpPure | kOpWrites,   OpStrEq)            \
-    X(StrNe,       kOpPure | kOpWrites,   OpStrNe)            \
-    X(And,         kOpPure | kOpWrites,   OpAnd)              \
-    X(Or,          kOpPure | kOpWrites,   OpOr)               \
-    X(Not,         kOpPure | kOpWrites,   OpNot)              \
-    X(Select,      kOpPure | kOpWrites,   OpSelect)           \
-    X(SetComp,     kOpWrites,             OpSetComp)          \
-    X(Triple,      kOpPure | kOpWrites,   OpTriple)           \
-    X(IndexRead,   kOpPure | kOpWrites,   OpIndexRead)        \
-    X(IndexWrite,  0,                     OpIndexWrite)       \
-    X(SpaceCast,   kOpWrites,             OpSpaceCast)        \
-    X(ColorCast,   kOpPure | kOpWrites,   OpColorCast)        \
-    X(Call,        kOpWrites,             OpCall)             \
-    X(Jump,        kOpControl,            OpJump)             \
-    X(If,          kOpControl,            OpIf)               \
-    X(Else,        kOpControl,            OpElse)             \
-    X(LoopInit,    kOpControl,            OpLoopInit)         \
-    X(LoopTest,    kOpControl,            OpLoopTest)         \
-    X(LoopNext,    kOpControl,            OpLoopNext)         \
-    X(Exit,        kOpControl,            OpExit)             \
-    X(Enter,       kOpControl,            OpEnter)            \
-    X(IllumBegin,  kOpControl,            OpIllumBegin)       \
-    X(IllumNext,   kOpControl,            OpIllumNext)        \
-    X(Illuminate,  kOpControl,            OpIlluminate)       \
-    X(Solar,       kOpControl,            OpSolar)
+#define GONIO_SL_OPCODES(X)                        \
+    X(Assign, kOpPure | kOpWrites, OpAssign)       \
+    X(Neg, kOpPure | kOpWrites, OpNeg)             \
+    X(Add, kOpPure | kOpWrites, OpAdd)             \
+    X(Sub, kOpPure | kOpWrites, OpSub)             \
+    X(Mul, kOpPure | kOpWrites, OpMul)             \
+    X(Div, kOpPure | kOpWrites, OpDiv)             \
+    X(MatMul, kOpPure | kOpWrites, OpMatMul)       \
+    X(MatDiv, kOpPure | kOpWrites, OpMatDiv)       \
+    X(Dot, kOpPure | kOpWrites, OpDot)             \
+    X(Cross, kOpPure | kOpWrites, OpCross)         \
+    X(Lt, kOpPure | kOpWrites, OpLt)               \
+    X(Le, kOpPure | kOpWrites, OpLe)               \
+    X(Gt, kOpPure | kOpWrites, OpGt)               \
+    X(Ge, kOpPure | kOpWrites, OpGe)               \
+    X(Eq, kOpPure | kOpWrites, OpEq)               \
+    X(Ne, kOpPure | kOpWrites, OpNe)               \
+    X(StrEq, kOpPure | kOpWrites, OpStrEq)         \
+    X(StrNe, kOpPure | kOpWrites, OpStrNe)         \
+    X(And, kOpPure | kOpWrites, OpAnd)             \
+    X(Or, kOpPure | kOpWrites, OpOr)               \
+    X(Not, kOpPure | kOpWrites, OpNot)             \
+    X(Select, kOpPure | kOpWrites, OpSelect)       \
+    X(SetComp, kOpWrites, OpSetComp)               \
+    X(Triple, kOpPure | kOpWrites, OpTriple)       \
+    X(IndexRead, kOpPure | kOpWrites, OpIndexRead) \
+    X(IndexWrite, 0, OpIndexWrite)                 \
+    X(SpaceCast, kOpWrites, OpSpaceCast)           \
+    X(ColorCast, kOpPure | kOpWrites, OpColorCast) \
+    X(Call, kOpWrites, OpCall)                     \
+    X(Jump, kOpControl, OpJump)                    \
+    X(If, kOpControl, OpIf)                        \
+    X(Else, kOpControl, OpElse)                    \
+    X(LoopInit, kOpControl, OpLoopInit)            \
+    X(LoopTest, kOpControl, OpLoopTest)            \
+    X(LoopNext, kOpControl, OpLoopNext)            \
+    X(Exit, kOpControl, OpExit)                    \
+    X(Enter, kOpControl, OpEnter)                  \
+    X(IllumBegin, kOpControl, OpIllumBegin)        \
+    X(IllumNext, kOpControl, OpIllumNext)          \
+    X(Illuminate, kOpControl, OpIlluminate)        \
+    X(Solar, kOpControl, OpSolar)
 
 enum class Op : uint16_t {
 #define GONIO_SL_ENUM(name, flags, fn) name,

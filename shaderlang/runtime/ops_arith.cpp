@@ -121,10 +121,18 @@ void OpAssign(ExecState& x, const Instr& in) {
     Unary(x, in, [](float v) { return v; });
 }
 
-void OpNeg(ExecState& x, const Instr& in) { Unary(x, in, [](float v) { return -v; }); }
-void OpAdd(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return a + b; }); }
-void OpSub(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return a - b; }); }
-void OpMul(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return a * b; }); }
+void OpNeg(ExecState& x, const Instr& in) {
+    Unary(x, in, [](float v) { return -v; });
+}
+void OpAdd(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return a + b; });
+}
+void OpSub(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return a - b; });
+}
+void OpMul(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return a * b; });
+}
 
 void OpDiv(ExecState& x, const Instr& in) {
     bool byZero = false;
@@ -183,10 +191,18 @@ void OpCross(ExecState& x, const Instr& in) {
     });
 }
 
-void OpLt(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return float(a < b); }); }
-void OpLe(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return float(a <= b); }); }
-void OpGt(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return float(a > b); }); }
-void OpGe(ExecState& x, const Instr& in) { Binary(x, in, [](float a, float b) { return float(a >= b); }); }
+void OpLt(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return float(a < b); });
+}
+void OpLe(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return float(a <= b); });
+}
+void OpGt(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return float(a > b); });
+}
+void OpGe(ExecState& x, const Instr& in) {
+    Binary(x, in, [](float a, float b) { return float(a >= b); });
+}
 
 void OpEq(ExecState& x, const Instr& in) {
     const RegRef d = x.Reg(in.args[0]), a = x.Reg(in.args[1]), b = x.Reg(in.args[2]);
@@ -212,7 +228,9 @@ void OpAnd(ExecState& x, const Instr& in) {
 void OpOr(ExecState& x, const Instr& in) {
     Binary(x, in, [](float a, float b) { return float(a != 0.0f || b != 0.0f); });
 }
-void OpNot(ExecState& x, const Instr& in) { Unary(x, in, [](float a) { return float(a == 0.0f); }); }
+void OpNot(ExecState& x, const Instr& in) {
+    Unary(x, in, [](float a) { return float(a == 0.0f); });
+}
 
 void OpSelect(ExecState& x, const Instr& in) {
     const RegRef d = x.Reg(in.args[0]), c = x.Reg(in.args[1]), a = x.Reg(in.args[2]),
@@ -267,7 +285,8 @@ void OpIndexWrite(ExecState& x, const Instr& in) {
         const int width = a.width / length;
         auto store = [&](int i) {
             int k = ClampIndex(At(idx, 0, i), length, &outside);
-            for (int c = 0; c < width; ++c) Out(a, k * width + c, i) = At(v, v.width == 1 ? 0 : c, i);
+            for (int c = 0; c < width; ++c)
+                Out(a, k * width + c, i) = At(v, v.width == 1 ? 0 : c, i);
         };
         if (!a.varying) {
             store(0);

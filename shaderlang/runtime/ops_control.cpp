@@ -91,12 +91,18 @@ Imath::V3f HsvToRgb(float h, float s, float v) {
     float f = h - std::floor(h);
     float p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
     switch (sector) {
-        case 0: return {v, t, p};
-        case 1: return {q, v, p};
-        case 2: return {p, v, t};
-        case 3: return {p, q, v};
-        case 4: return {t, p, v};
-        default: return {v, p, q};
+        case 0:
+            return {v, t, p};
+        case 1:
+            return {q, v, p};
+        case 2:
+            return {p, v, t};
+        case 3:
+            return {p, q, v};
+        case 4:
+            return {t, p, v};
+        default:
+            return {v, p, q};
     }
 }
 
@@ -111,7 +117,8 @@ float HueToRgb(float m1, float m2, float h) {
 Imath::V3f HslToRgb(float h, float s, float l) {
     float m2 = l <= 0.5f ? l * (1 + s) : l + s - l * s;
     float m1 = 2 * l - m2;
-    return {HueToRgb(m1, m2, h + 1.0f / 3.0f), HueToRgb(m1, m2, h), HueToRgb(m1, m2, h - 1.0f / 3.0f)};
+    return {HueToRgb(m1, m2, h + 1.0f / 3.0f), HueToRgb(m1, m2, h),
+            HueToRgb(m1, m2, h - 1.0f / 3.0f)};
 }
 
 Imath::V3f XyzToRgb(const Imath::V3f& c) {
@@ -184,7 +191,9 @@ void OpElse(ExecState& x, const Instr& in) {
     if (SetMask(x, in.extra, in.extra - 1, &c, true) == 0) x.pc = in.jump;
 }
 
-void OpLoopInit(ExecState& x, const Instr& in) { SetMask(x, in.extra, in.extra - 1, nullptr, false); }
+void OpLoopInit(ExecState& x, const Instr& in) {
+    SetMask(x, in.extra, in.extra - 1, nullptr, false);
+}
 
 void OpLoopTest(ExecState& x, const Instr& in) {
     RegRef c = x.Reg(in.args[0]);
@@ -195,7 +204,9 @@ void OpLoopTest(ExecState& x, const Instr& in) {
     SetMask(x, in.extra + 1, in.extra, nullptr, false);
 }
 
-void OpLoopNext(ExecState& x, const Instr& in) { SetMask(x, in.extra + 1, in.extra, nullptr, false); }
+void OpLoopNext(ExecState& x, const Instr& in) {
+    SetMask(x, in.extra + 1, in.extra, nullptr, false);
+}
 
 void OpEnter(ExecState& x, const Instr& in) { SetMask(x, in.extra, in.extra - 1, nullptr, false); }
 

@@ -23,8 +23,8 @@ struct Register {
     TypeSpec type;
     bool varying = false;
     bool isString = false;
-    int width = 0;             // floats per point (all elements); strings: element count
-    bool constant = false;     // value in Program::constFloats / constStrings at constOffset
+    int width = 0;          // floats per point (all elements); strings: element count
+    bool constant = false;  // value in Program::constFloats / constStrings at constOffset
     int constOffset = -1;
     std::string name;          // variable name ("" for temporaries)
     int global = -1;           // GlobalId
@@ -36,21 +36,21 @@ struct Register {
 
 struct Instr {
     uint16_t op = 0;
-    uint8_t depth = 0;      // mask-stack entry whose points this instruction runs for
-    uint8_t argCount = 0;   // registers in args
+    uint8_t depth = 0;                   // mask-stack entry whose points this instruction runs for
+    uint8_t argCount = 0;                // registers in args
     int32_t args[4] = {-1, -1, -1, -1};  // args[0] is the destination where there is one
-    int32_t jump = -1;      // control instructions: target (break/continue/return: the
-                            // region they leave)
-    int32_t extra = 0;      // opcode-specific: mask entry, builtin row, call-list offset
-    int32_t loc = 0;        // index into Program::locations (file:line) for run-time warnings
-    int32_t region = 0;     // control region (for detail inference, see optimizer.cpp)
+    int32_t jump = -1;                   // control instructions: target (break/continue/return: the
+                                         // region they leave)
+    int32_t extra = 0;   // opcode-specific: mask entry, builtin row, call-list offset
+    int32_t loc = 0;     // index into Program::locations (file:line) for run-time warnings
+    int32_t region = 0;  // control region (for detail inference, see optimizer.cpp)
 };
 
 // Control regions: a nest of if/loop/function/light bodies. An instruction inside a region
 // whose condition is varying runs under a varying mask.
 struct Region {
     int parent = -1;
-    int condition = -1;     // register; -1: none (function body, plain block)
+    int condition = -1;          // register; -1: none (function body, plain block)
     bool alwaysVarying = false;  // illuminance/illuminate/solar bodies
 };
 
@@ -76,12 +76,12 @@ struct Program {
     std::vector<std::string> constStrings;
     std::vector<std::string> locations;  // "file.sl:12"
     std::vector<Region> regions{Region{}};
-    std::vector<ParamCode> params;       // by parameter index
-    int globals[32];                     // register per GlobalId, -1 where unused
-    int maxDepth = 1;                    // mask-stack entries needed
-    std::map<std::string, int> named;    // top-level variables, parameters and globals
+    std::vector<ParamCode> params;     // by parameter index
+    int globals[32];                   // register per GlobalId, -1 where unused
+    int maxDepth = 1;                  // mask-stack entries needed
+    std::map<std::string, int> named;  // top-level variables, parameters and globals
     std::vector<Preset> presets;
-    bool ambientLight = true;            // a light shader without illuminate or solar
+    bool ambientLight = true;                   // a light shader without illuminate or solar
     std::shared_ptr<RuntimeWarnings> warnings;  // shared by every instance's copy
 
     Program() {

@@ -150,14 +150,20 @@ std::vector<double> FoldedRing(const PhotonTraceResult& r, double theta0, double
 TEST(Grass, BackwardAndForwardPeaksRisingTowardsGrazing) {
     const std::string rib = test::ReadRib("grass.rib");
     const auto at45 = test::TraceRib(rib, IncidenceBand(43, 47, 200000, true));
-    std::vector<double> sigma;
-    const auto ring = FoldedRing(at45, 75, 85, &sigma);
-    const int lowest = int(std::min_element(ring.begin(), ring.end()) - ring.begin());
-    EXPECT_GE(lowest, 2);  // between 60° and 150°
-    EXPECT_LE(lowest, 5);
-    // Both ends stand out of the noise: at least 3σ above the minimum.
-    EXPECT_GT(ring[0] - ring[lowest], 3 * std::hypot(sigma[0], sigma[lowest]));
-    EXPECT_GT(ring[6] - ring[lowest], 3 * std::hypot(sigma[6], sigma[lowest]));
+    // The forward peak (Δφ = 180°) shows on the 60° ring, near the blades' specular direction,
+    // the backward one (Δφ = 0) towards grazing exits; each stands at least 3σ above the
+    // ring's minimum, which lies between 60° and 150°.
+    const double ringTheta[2] = {55, 75};
+    const int peak[2] = {6, 0};
+    for (int i = 0; i < 2; ++i) {
+        std::vector<double> sigma;
+        const auto ring = FoldedRing(at45, ringTheta[i], ringTheta[i] + 10, &sigma);
+        const int lowest = int(std::min_element(ring.begin(), ring.end()) - ring.begin());
+        EXPECT_GE(lowest, 2);
+        EXPECT_LE(lowest, 5);
+        EXPECT_EQ(std::max_element(ring.begin(), ring.end()) - ring.begin(), peak[i]);
+        EXPECT_GT(ring[peak[i]] - ring[lowest], 3 * std::hypot(sigma[peak[i]], sigma[lowest]));
+    }
 
     const auto at70 = test::TraceRib(rib, IncidenceBand(68, 72, 200000, true));
     const auto low = FoldedRing(at70, 55, 65), mid = FoldedRing(at70, 65, 75),

@@ -25,15 +25,20 @@ TEST(ShadeCheck, TypeErrorsAreAllReported) {
         "  float g = (u < 1);\n"
         "  Ci = undefinedvar;\n"
         "}\n");
-    EXPECT_NE(e.find("test.sl:3:13: error: in the initialiser of 'c': cannot convert point to color"),
-              std::string::npos) << e;
+    EXPECT_NE(
+        e.find("test.sl:3:13: error: in the initialiser of 'c': cannot convert point to color"),
+        std::string::npos)
+        << e;
     EXPECT_NE(e.find("test.sl:4:13: error: unknown function 'nosuch'"), std::string::npos) << e;
     EXPECT_NE(e.find("test.sl:5:11: error: cannot apply '+' to color and point (points and colors "
                      "do not mix)"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("test.sl:6:16: error: a comparison result can only be used as a condition"),
-              std::string::npos) << e;
-    EXPECT_NE(e.find("test.sl:7:8: error: unknown variable 'undefinedvar'"), std::string::npos) << e;
+              std::string::npos)
+        << e;
+    EXPECT_NE(e.find("test.sl:7:8: error: unknown variable 'undefinedvar'"), std::string::npos)
+        << e;
 }
 
 TEST(ShadeCheck, UniformVaryingRules) {
@@ -47,28 +52,34 @@ TEST(ShadeCheck, UniformVaryingRules) {
         "  if (b > 0) c = 3;\n"
         "}\n");
     EXPECT_NE(e.find("test.sl:2:21: error: cannot initialise uniform 'a' with a varying value"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("test.sl:4:16: error: cannot assign to uniform 'b' under a varying condition"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("test.sl:5:3: error: cannot assign a varying value to uniform 'b'"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_EQ(e.find("test.sl:7:"), std::string::npos) << "a uniform condition is fine: " << e;
 }
 
 TEST(ShadeCheck, ReadOnlyGlobalsAndParametersNeedDefaults) {
     std::string e = Errors("surface t(float Kd;) { P = 0; L = 0; }\n");
     EXPECT_NE(e.find("test.sl:1:17: error: shader parameter 'Kd' needs a default value"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("error: cannot assign to 'P': it is read-only in surface shaders"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("error: cannot assign to 'L': it is read-only in surface shaders"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
 }
 
 TEST(ShadeCheck, OverloadsResolveOnExpectedReturnType) {
     testing::CapturedDiagnostics d;
-    auto shader = testing::Compile(
-        "surface t() { float f = noise(P); color c = noise(P); Ci = c + f; }", d);
+    auto shader =
+        testing::Compile("surface t() { float f = noise(P); color c = noise(P); Ci = c + f; }", d);
     EXPECT_TRUE(shader) << d.Text();
     std::string e = Errors("surface t() { Ci = normalize(\"x\"); }");
     EXPECT_NE(e.find("error: no version of 'normalize' takes (string)"), std::string::npos) << e;
@@ -83,9 +94,11 @@ TEST(ShadeCheck, ControlFlowErrors) {
         "}\n");
     EXPECT_NE(e.find("test.sl:2:3: error: break outside a loop"), std::string::npos) << e;
     EXPECT_NE(e.find("test.sl:3:19: error: continue 2 leaves more loops than enclose it"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("test.sl:4:3: error: illuminate is only allowed in light shaders"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
 }
 
 TEST(ShadeCheck, RecursionIsAnError) {
@@ -114,8 +127,8 @@ TEST(ShadePreprocessor, DefinesConditionalsAndLineNumbers) {
     e = Errors("#if 1\nsurface t() {}\n");
     EXPECT_NE(e.find("error: #if without #endif"), std::string::npos) << e;
     e = Errors("#include \"missing.h\"\nsurface t() {}\n");
-    EXPECT_NE(e.find("test.sl:1:1: error: cannot find include file 'missing.h'"),
-              std::string::npos) << e;
+    EXPECT_NE(e.find("test.sl:1:1: error: cannot find include file 'missing.h'"), std::string::npos)
+        << e;
 }
 
 }  // namespace

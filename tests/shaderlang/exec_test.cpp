@@ -32,7 +32,8 @@ TEST(ShadeExec, DivergentIfElse) {
         float x = 0;
         if (u < 0.5) x = 1; else x = 2;
         Ci = x;
-    })", 4, 1, "Ci");
+    })",
+                   4, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
     EXPECT_EQ(r.At(0, 0), 1);
     EXPECT_EQ(r.At(0, 1), 1);
@@ -45,7 +46,8 @@ TEST(ShadeExec, DivergentWhileRunsEachPointItsOwnCount) {
         float i = 0, count = 0;
         while (i < u * 8) { count += 1; i += 1; }
         Ci = count;
-    })", 4, 1, "Ci");
+    })",
+                   4, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
     EXPECT_EQ(r.At(0, 0), 1);  // u*8 = 1
     EXPECT_EQ(r.At(0, 1), 3);
@@ -62,10 +64,11 @@ TEST(ShadeExec, BreakAndContinueWithMasks) {
             sum += i;
         }
         Ci = sum;
-    })", 4, 1, "Ci");
+    })",
+                   4, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
-    EXPECT_EQ(r.At(0, 0), 0 + 1);          // i <= 1
-    EXPECT_EQ(r.At(0, 1), 0 + 1 + 3);      // i <= 3, skipping 2
+    EXPECT_EQ(r.At(0, 0), 0 + 1);      // i <= 1
+    EXPECT_EQ(r.At(0, 1), 0 + 1 + 3);  // i <= 3, skipping 2
     EXPECT_EQ(r.At(0, 2), 0 + 1 + 3 + 4 + 5);
     EXPECT_EQ(r.At(0, 3), 0 + 1 + 3 + 4 + 5 + 6 + 7);
 }
@@ -80,9 +83,10 @@ TEST(ShadeExec, BreakOutOfTwoLoops) {
             }
         }
         Ci = n;
-    })", 4, 1, "Ci");
+    })",
+                   4, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
-    EXPECT_EQ(r.At(0, 0), 2);   // u*16 = 2
+    EXPECT_EQ(r.At(0, 0), 2);  // u*16 = 2
     EXPECT_EQ(r.At(0, 1), 6);
     EXPECT_EQ(r.At(0, 3), 14);
 }
@@ -98,7 +102,8 @@ TEST(ShadeExec, UserFunctionWithOutputArgumentAndEarlyReturn) {
             float y = 0;
             float z = twice(u, y);
             Ci = color(z, y, 0);
-        })", 4, 1, "Ci");
+        })",
+                   4, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
     EXPECT_FLOAT_EQ(r.At(0, 0), 0);
     EXPECT_FLOAT_EQ(r.At(1, 0), 0.375f);
@@ -111,7 +116,8 @@ TEST(ShadeExec, ExternReachesTheEnclosingShader) {
         float k = 2;
         float f(float a) { extern float k; return a * k; }
         Ci = f(3);
-    })", 1, 1, "Ci");
+    })",
+                   1, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
     EXPECT_EQ(r.At(0, 0), 6);
 }
@@ -125,7 +131,8 @@ TEST(ShadeExec, OperatorsOnTriplesAndMatrices) {
         matrix q = m * m;
         matrix inv = 1 / m;
         Ci = color(zcomp(c), d, comp(q, 0, 0) + comp(inv, 1, 1));
-    })", 1, 1, "Ci");
+    })",
+                   1, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
     EXPECT_FLOAT_EQ(r.At(0, 0), 1);
     EXPECT_FLOAT_EQ(r.At(1, 0), 3);
@@ -138,7 +145,8 @@ TEST(ShadeExec, ArraysAndTernary) {
         a[0] = 10; a[1] = 20; a[2] = w[2];
         float i = u < 0.5 ? 1 : 2;
         Ci = a[i];
-    })", 2, 1, "Ci");
+    })",
+                   2, 1, "Ci");
     ASSERT_EQ(r.width, 3) << r.diagnostics;
     EXPECT_EQ(r.At(0, 0), 20);
     EXPECT_EQ(r.At(0, 1), 3);
@@ -155,8 +163,8 @@ TEST(ShadeExec, ColorSpaceCasts) {
 
 TEST(ShadeExec, FiveColorComponents) {
     testing::CapturedDiagnostics d;
-    auto shader = testing::Compile(
-        "surface t(color c = (1, 2, 3, 4, 5);) { Ci = c * 2 + ncomps; }", d, 5);
+    auto shader =
+        testing::Compile("surface t(color c = (1, 2, 3, 4, 5);) { Ci = c * 2 + ncomps; }", d, 5);
     ASSERT_TRUE(shader) << d.Text();
     ShaderInstance instance(shader);
     auto r = testing::Run(instance, 1, 1, "Ci");

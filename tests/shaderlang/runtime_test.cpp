@@ -20,7 +20,8 @@ TEST(ShadeRuntime, DescribesParameters) {
                                   output float aov = 0; string name = "x";
                                   point from = point "world" (0, 0, 1); float w[2] = {3, 4};) {
         Ci = c;
-    })", d);
+    })",
+                     d);
     ASSERT_TRUE(s) << d.Text();
     ASSERT_EQ(s->Params().size(), 6u);
     EXPECT_EQ(s->Type(), ShaderType::Surface);
@@ -41,7 +42,8 @@ TEST(ShadeRuntime, SpecialisationFoldsInstanceConstants) {
     auto s = Compile(R"(surface t(float Kd = 0.5; float mode = 0;) {
         float k = Kd * 2;
         if (mode > 0) { Ci = color(k, 0, 0); } else { Ci = color(0, k, 0); }
-    })", d);
+    })",
+                     d);
     ASSERT_TRUE(s) << d.Text();
     ShaderInstance instance(s);
     std::string error;
@@ -66,7 +68,8 @@ TEST(ShadeRuntime, LocalsAreUniformUnlessAVaryingValueReachesThem) {
         float c = 1;
         if (u > 0.5) c = 2;
         Ci = a + b + c;
-    })", d);
+    })",
+                     d);
     ASSERT_TRUE(s) << d.Text();
     ShaderInstance instance(s);
     instance.KeepVariables();
@@ -82,13 +85,16 @@ TEST(ShadeRuntime, LocalsAreUniformUnlessAVaryingValueReachesThem) {
 
 TEST(ShadeRuntime, DivisionByZeroAndNaNAreReportedOncePerLine) {
     CapturedDiagnostics d;
-    auto s = Compile("surface t() {\n  float z = u - u;\n  float a = 1 / z;\n"
-                     "  float b = sqrt(-1 - u);\n  Ci = a + b;\n}\n", d);
+    auto s = Compile(
+        "surface t() {\n  float z = u - u;\n  float a = 1 / z;\n"
+        "  float b = sqrt(-1 - u);\n  Ci = a + b;\n}\n",
+        d);
     ASSERT_TRUE(s) << d.Text();
     ShaderInstance instance(s);
     auto r = testing::Run(instance, 4, 4, "Ci");
     const std::string& text = r.diagnostics;
-    EXPECT_NE(text.find("test.sl:3: warning: division by zero (the result is 0)"), std::string::npos)
+    EXPECT_NE(text.find("test.sl:3: warning: division by zero (the result is 0)"),
+              std::string::npos)
         << text;
     EXPECT_EQ(text.find("division by zero"), text.rfind("division by zero")) << text;
     EXPECT_NE(text.find("test.sl:4: warning: NaN from sqrt()"), std::string::npos) << text;
@@ -98,13 +104,15 @@ TEST(ShadeRuntime, IlluminanceLoopsOverIlluminateLights) {
     CapturedDiagnostics d;
     auto light = Compile(R"(light pt(float intensity = 1; point from = (0, 0, -1);) {
         illuminate (from) { Cl = intensity / (L . L); }
-    })", d);
+    })",
+                         d);
     auto amb = Compile("light amb(float intensity = 0.25;) { Cl = intensity; }", d);
     auto surf = Compile(R"(surface s() {
         color sum = 0;
         illuminance (P, N, PI / 2) { sum += Cl * (normalize(L) . normalize(N)); }
         Ci = sum + ambient();
-    })", d);
+    })",
+                        d);
     ASSERT_TRUE(light && amb && surf) << d.Text();
     auto lightInstance = std::make_shared<ShaderInstance>(light);
     auto ambInstance = std::make_shared<ShaderInstance>(amb);

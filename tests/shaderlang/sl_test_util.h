@@ -16,7 +16,7 @@ namespace gonio::sl::testing {
 
 // Diagnostics written to a memory buffer.
 class CapturedDiagnostics {
-public:
+  public:
     CapturedDiagnostics() : file_(open_memstream(&buffer_, &size_)), diagnostics_(file_) {}
     ~CapturedDiagnostics() {
         std::fclose(file_);
@@ -28,7 +28,7 @@ public:
         return std::string(buffer_, size_);
     }
 
-private:
+  private:
     char* buffer_ = nullptr;
     size_t size_ = 0;
     std::FILE* file_;
