@@ -144,9 +144,13 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
         const char* nl = static_cast<const char*>(std::memchr(guess, '\n', end - guess));
         cuts[i] = nl ? nl + 1 : end;
     }
-    std::vector<Piece> pieces(numPieces);
+    pieces_.resize(numPieces);
     tbb::parallel_for(0, numPieces, [&](int i) {
-        Piece& piece = pieces[i];
+        Piece& piece = pieces_[i];
+        piece.rows.clear();
+        piece.lines = 0;
+        piece.errorLine = 0;
+        piece.error.clear();
         piece.rows.reserve((cuts[i + 1] - cuts[i]) / (stride * 8) + 16);
         std::vector<float> row(stride);
         const char* p = cuts[i];
@@ -176,7 +180,15 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
             ++p;  // past the newline
         }
     });
-    for (Piece& piece : pieces) {
+    std::size_t added = 0;
+    for (int i = 0; i < numPieces; ++i) added += pieces_[i].rows.size();
+    if (rows.capacity() < rows.size() + added) {
+        // Room for the rest of the file at once: growing by doubling would copy it again.
+        const std::size_t rest = (header_.count - photonsRead_) * stride;
+        rows.reserve(rows.size() + std::max(added, std::min(rest, std::size_t(1) << 28)));
+    }
+    for (int i = 0; i < numPieces; ++i) {
+        const Piece& piece = pieces_[i];
         if (!piece.error.empty()) {
             throw PhotonMapError(path_ + ":" + std::to_string(lineNumber_ + piece.errorLine) +
                                  ": " + piece.error);
@@ -227,9 +239,6 @@ PhotonMap ReadPhotonMap(const std::string& path) {
     PhotonMap map;
     map.paths = reader.Header().paths;
     while (reader.ReadBatch(1 << 20, map.rows)) {
-        if (map.rows.capacity() == map.rows.size() && reader.NumComponents() > 0) {
-            map.rows.reserve(reader.Header().count * (kFirstColour + reader.NumComponents()));
-        }
     }
     map.ncomps = reader.NumComponents();
     return map;

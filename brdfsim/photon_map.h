@@ -72,6 +72,7 @@ class PhotonMapReader {
     std::uint64_t photonsRead_ = 0;
     std::uint64_t lineNumber_ = 1;  // lines consumed so far
     std::vector<char> buffer_;      // allocated once: carry + one chunk
+    std::vector<Piece> pieces_;     // per-thread parse results, their storage reused
     std::size_t carry_ = 0;         // bytes of an incomplete line at the front of buffer_
     bool eof_ = false;
 };

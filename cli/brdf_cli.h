@@ -51,14 +51,17 @@ struct PhotonMapSettings {
     Horizon horizon = Horizon::kReflect;
     int isotropic = -1;   // -1: decide from the map (all φ_in = 0 means isotropic)
     bool simple = false;  // BrdfSimple instead of a grid (sectslow)
+    int knn = 0;          // > 0: adaptive radius from the knn-th nearest photon
 };
 
 // A .grd is read as it is (its baked table used when `useBaked`); a .pm is turned into splats
-// with `settings` and a grid of DefaultGridFor, or summed directly when settings.simple.
+// with `settings` and a grid of DefaultGridFor, summed directly when settings.simple, or
+// estimated with an adaptive radius when settings.knn > 0.
 LoadedBrdf LoadBrdf(const std::string& path, const PhotonMapSettings& settings, bool useBaked);
 
 // Options shared by the tools that read photon maps.
 void AddNormOption(CLI::App* app, std::string* norm, std::string* horizon);
+void AddKnnOption(CLI::App* app, int* knn);
 PhotonMapSettings MakeSettings(double spread, double energyMin, const std::string& norm,
                                const std::string& horizon);
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "brdf_adaptive.h"
 #include "brdf_cli.h"
 #include "brdf_grid.h"
 #include "brdf_report.h"
@@ -82,6 +83,13 @@ void AddNormOption(CLI::App* app, std::string* norm, std::string* horizon) {
         ->capture_default_str();
 }
 
+void AddKnnOption(CLI::App* app, int* knn) {
+    app->add_option("--knn", *knn,
+                    "photon-map input: adaptive radius, the distance to the K-th nearest photon "
+                    "(SPREAD then only scales the splat weights)")
+        ->check(CLI::NonNegativeNumber);
+}
+
 PhotonMapSettings MakeSettings(double spread, double energyMin, const std::string& norm,
                                const std::string& horizon) {
     PhotonMapSettings settings;
@@ -115,7 +123,9 @@ LoadedBrdf LoadBrdf(const std::string& path, const PhotonMapSettings& settings, 
         }
     }
     auto splats = std::make_shared<const SplatSet>(map, params);
-    if (settings.simple) {
+    if (settings.knn > 0) {
+        loaded.owned = std::make_unique<BrdfAdaptive>(splats, settings.knn);
+    } else if (settings.simple) {
         loaded.owned = std::make_unique<BrdfSimple>(splats);
     } else {
         int rings, rects;

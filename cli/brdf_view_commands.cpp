@@ -221,17 +221,20 @@ void AddSectSlow(CLI::App& brdf, int* exitCode) {
     auto args = std::make_shared<CutArgs>();
     auto norm = std::make_shared<std::string>("l2");
     auto horizon = std::make_shared<std::string>("reflect");
+    auto knn = std::make_shared<int>(0);
     cmd->add_option("SPREAD", *spread, "splat radius: radians, or degrees as 17deg")->required();
     cmd->add_option("ENERGY_MIN", *energyMin, "photons with less energy are skipped")->required();
     cmd->add_option("NR_SAMPLES", *samples, "points along the cut")->required();
     cmd->add_option("INPUT", *input, "photon map (.pm)")->required();
     AddCutOptions(cmd, args.get());
     AddNormOption(cmd, norm.get(), horizon.get());
+    AddKnnOption(cmd, knn.get());
     cmd->callback([=] {
         *exitCode = RunGuarded("sectslow", [&] {
             PhotonMapSettings settings =
                 MakeSettings(ParseSpread(*spread), *energyMin, *norm, *horizon);
             settings.simple = true;
+            settings.knn = *knn;
             const LoadedBrdf loaded = LoadBrdf(*input, settings, false);
             RunSections({{BaseName(*input), loaded.brdf}}, *args, *samples);
         });
@@ -247,6 +250,7 @@ void AddMap(CLI::App& brdf, int* exitCode) {
     auto colourMap = std::make_shared<std::string>("none");
     auto norm = std::make_shared<std::string>("l2");
     auto horizon = std::make_shared<std::string>("reflect");
+    auto knn = std::make_shared<int>(0);
     cmd->add_option("SIZE", options->size, "image width and height in pixels")->required();
     cmd->add_option("ENERGY_SCALE", options->energyScale, "pixel value = f × ENERGY_SCALE")
         ->required();
@@ -260,11 +264,13 @@ void AddMap(CLI::App& brdf, int* exitCode) {
         ->capture_default_str();
     cmd->add_flag("--scale-bar", options->scaleBar, "a colour strip from 0 to 1/ENERGY_SCALE");
     AddNormOption(cmd, norm.get(), horizon.get());
+    AddKnnOption(cmd, knn.get());
     cmd->callback([=] {
         *exitCode = RunGuarded("map", [&] {
             options->colourMap = ParseColourMap(*colourMap);
-            const LoadedBrdf loaded =
-                LoadBrdf(*input, MakeSettings(ParseSpread(*spread), 0.0, *norm, *horizon), true);
+            PhotonMapSettings settings = MakeSettings(ParseSpread(*spread), 0.0, *norm, *horizon);
+            settings.knn = *knn;
+            const LoadedBrdf loaded = LoadBrdf(*input, settings, true);
             if (loaded.grd &&
                 std::abs(loaded.grd->splats->Params().radius - ParseSpread(*spread)) > 1e-6) {
                 std::fprintf(stderr, "note: %s was optimised with spread %.4f; SPREAD ignored\n",

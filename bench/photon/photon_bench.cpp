@@ -1,6 +1,8 @@
 // BRDFLight throughput: photon paths per second of the tracer on ribs/grass.rib and
 // ribs/brushed_metal.rib with 1 and 2 threads, next to the ray rate of raw Embree (rtcIntersect1)
-// and of our RayScene on the same geometry and the tracer's own beam rays (issue 5's benchmark).
+// and of our RayScene on the same geometry and the tracer's own beam rays, and to a minimal
+// photon tracer written straight on Embree (diffuse bounces, nothing recorded): issue 5's
+// benchmark.
 //
 //   build/bin/photon_bench --benchmark_counters_tabular=true
 //
@@ -20,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+#include "photon/micro_brdf.h"
 #include "photon/photon_tracer.h"
 #include "render/random.h"
 #include "render/ray_scene.h"
@@ -115,6 +118,32 @@ struct RawEmbree {
         rtcReleaseGeometry(g);
     }
 
+    // A minimal photon path on plain Embree: the beam, then cosine-weighted bounces about
+    // Embree's own geometric normal until the ray escapes (at most 100). Returns the bounces.
+    int TracePath(const BeamRay& beam, uint64_t path) const {
+        uint64_t state = HashCombine(99, path);
+        auto next = [&] { return ToUnitFloat(Mix64(state += 0x9e3779b97f4a7c15ull)); };
+        V3f org = beam.org, dir = beam.dir;
+        for (int bounce = 0; bounce < 100; ++bounce) {
+            RTCIntersectContext context;
+            rtcInitIntersectContext(&context);
+            RTCRayHit rh{};
+            rh.ray.org_x = org.x, rh.ray.org_y = org.y, rh.ray.org_z = org.z;
+            rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
+            rh.ray.tfar = std::numeric_limits<float>::infinity();
+            rh.ray.mask = ~0u;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(scene, &context, &rh);
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return bounce;
+            V3f n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+            n.normalize();
+            if (n.dot(dir) > 0) n = -n;
+            org = org + rh.ray.tfar * dir + 1e-5f * n;
+            dir = FromLocal(n, std::sqrt(1 - next()), 6.2831853f * next());
+        }
+        return 100;
+    }
+
     bool Intersect(const BeamRay& ray) const {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -181,6 +210,27 @@ void BM_RaySceneBeams(benchmark::State& state) {
     });
 }
 
+// Plain-Embree photons: the same beams, diffuse bounces, no shading or records.
+void BM_RawEmbreePhotons(benchmark::State& state) {
+    const Fixture& f = Scene(static_cast<int>(state.range(0)));
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(1));
+    int64_t bounces = 0;
+    for (auto _ : state) {
+        std::atomic<int64_t> count{0};
+        tbb::parallel_for(tbb::blocked_range<int>(0, kRays, 4096), [&](const auto& r) {
+            int64_t local = 0;
+            for (int i = r.begin(); i != r.end(); ++i) local += f.raw->TracePath(f.beams[i], i);
+            count += local;
+        });
+        bounces = count;
+    }
+    state.counters["paths/s"] =
+        benchmark::Counter(double(kRays), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["rays/s"] =
+        benchmark::Counter(double(kRays + bounces), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["bounces"] = double(bounces) / kRays;
+}
+
 void BM_PhotonTracer(benchmark::State& state) {
     const Fixture& f = Scene(static_cast<int>(state.range(0)));
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(1));
@@ -209,6 +259,7 @@ void Args(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_RawEmbreeBeams)->Apply(Args);
 BENCHMARK(BM_RaySceneBeams)->Apply(Args);
+BENCHMARK(BM_RawEmbreePhotons)->Apply(Args);
 BENCHMARK(BM_PhotonTracer)->Apply(Args);
 
 }  // namespace

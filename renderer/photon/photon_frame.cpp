@@ -64,8 +64,9 @@ std::string PhotonSummary(const std::string& output, const PhotonStats& s) {
         std::snprintf(line, sizeof line, " %.4f", e / paths);
         text += line;
     }
-    std::snprintf(line, sizeof line, "; %.3f s, %.3f M paths/s on %d threads", s.seconds,
-                  s.seconds > 0 ? s.paths / s.seconds * 1e-6 : 0.0, s.threads);
+    std::snprintf(line, sizeof line, "; %.3f s, %.3f M paths/s on %d thread%s", s.seconds,
+                  s.seconds > 0 ? s.paths / s.seconds * 1e-6 : 0.0, s.threads,
+                  s.threads == 1 ? "" : "s");
     return text + line;
 }
 

@@ -33,6 +33,8 @@ struct SampleState {
     float x, y;
     float colour[3] = {0, 0, 0};
     float transmittance[3] = {1, 1, 1};
+    // Coverage by visible surfaces; matte objects hide what is behind them but add none.
+    float alpha = 0;
     float depth = std::numeric_limits<float>::infinity();
     bool alive = true;
 };
@@ -70,7 +72,7 @@ bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
         sample.ray.tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
         scene_.Evaluate(ray.org, ray.dir, hit, sp);
         *t = hit.t;
-        if (sp->shape->attributes->twoSided || sp->Ng.dot(ray.dir) <= 0) return true;
+        if (sp->attributes->twoSided || sp->Ng.dot(ray.dir) <= 0) return true;
     }
 }
 
@@ -108,7 +110,7 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
     std::vector<const Attributes*> order;
     std::unordered_map<const Attributes*, std::vector<int>> members;
     for (int k = 0; k < int(hitSamples.size()); ++k) {
-        const Attributes* attributes = points[k].shape->attributes.get();
+        const Attributes* attributes = points[k].attributes;
         auto [it, isNew] = members.try_emplace(attributes);
         if (isNew) order.push_back(attributes);
         it->second.push_back(k);
@@ -129,7 +131,7 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
         if (!attributes->matte) shading_.Shade(batch, Ci.data(), Oi.data());
         for (size_t j = 0; j < batchMembers.size(); ++j) {
             SampleState& sample = samples[hitSamples[batchMembers[j]]];
-            float remaining = 0;
+            float remaining = 0, covered = 0;
             for (int c = 0; c < 3; ++c) {
                 const int cc = std::min(c, ncomps_ - 1);
                 // A matte object hides what lies behind it and adds nothing itself (RISpec
@@ -139,9 +141,11 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
                     1.f);
                 if (!attributes->matte)
                     sample.colour[c] += sample.transmittance[c] * Ci[j * ncomps_ + cc];
+                covered += sample.transmittance[c] * opacity / 3;
                 sample.transmittance[c] *= 1 - opacity;
                 remaining = std::max(remaining, sample.transmittance[c]);
             }
+            if (!attributes->matte) sample.alpha += covered;
             if (remaining < 1e-4f) sample.alive = false;
         }
     }
@@ -235,11 +239,9 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
                                                           options.colorComponents);
             raysTraced += renderer->Render(samples);
             for (const SampleState& sample : samples) {
-                const float coverage = 1 - (sample.transmittance[0] + sample.transmittance[1] +
-                                            sample.transmittance[2]) /
-                                               3;
-                const float values[kStandardChannelCount] = {
-                    sample.colour[0], sample.colour[1], sample.colour[2], coverage, sample.depth};
+                const float values[kStandardChannelCount] = {sample.colour[0], sample.colour[1],
+                                                             sample.colour[2], sample.alpha,
+                                                             sample.depth};
                 film.SetSample(sample.px, sample.py, sample.s, sample.x, sample.y, values);
             }
             progress.Advance(uint64_t(tile.rows().size()) * tile.cols().size());

@@ -137,6 +137,7 @@ struct SceneLevel {
 struct InstancePlacement {
     int level;  // index into Impl::definitions
     M44f worldFromDefinition, definitionFromWorld;
+    const Attributes* attributes;
 };
 
 struct RayScene::Impl {
@@ -392,8 +393,8 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
                                 use.worldFromDefinition.getValue());
         auto record = std::make_unique<GeometryRecord>();
         record->instance = static_cast<int>(s.instances.size());
-        s.instances.push_back(
-            {it->second, use.worldFromDefinition, use.worldFromDefinition.inverse()});
+        s.instances.push_back({it->second, use.worldFromDefinition,
+                               use.worldFromDefinition.inverse(), use.attributes.get()});
         s.Attach(s.top, g, std::move(record));
     }
     rtcCommitScene(s.top.scene);
@@ -515,12 +516,14 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
                         SurfacePoint* out) const {
     const Impl& s = *impl_;
     const GeometryRecord* record;
+    const Attributes* instanceAttributes = nullptr;
     M44f worldFromSpace, spaceFromWorld;
     if (hit.instID != RTC_INVALID_GEOMETRY_ID) {
         const InstancePlacement& placement = s.instances[s.top.records[hit.instID]->instance];
         record = s.definitions[placement.level].records[hit.geomID].get();
         worldFromSpace = placement.worldFromDefinition;
         spaceFromWorld = placement.definitionFromWorld;
+        instanceAttributes = placement.attributes;
     } else {
         record = s.top.records[hit.geomID].get();
     }
@@ -545,7 +548,8 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     sp.hitU = hit.u, sp.hitV = hit.v;
     sp.stencils = object.stencils;
 
-    const Attributes& attributes = *record->shape->attributes;
+    sp.attributes = instanceAttributes ? instanceAttributes : record->shape->attributes.get();
+    const Attributes& attributes = *sp.attributes;
     sp.Cs = attributes.color;
     sp.Os = attributes.opacity;
     const std::vector<PrimVar>& vars = record->vars->vars;

@@ -20,6 +20,8 @@ struct SurfacePoint {
     float u = 0, v = 0, s = 0, t = 0;
     std::vector<float> Cs, Os;  // ncomps values each
     const SceneShape* shape = nullptr;
+    // The attributes the point is shaded with: the shape's, or an object instance's.
+    const Attributes* attributes = nullptr;
     Imath::M44f worldFromObject;  // including an object instance's placement
 
     // Where the hit lies, so that RayScene::InterpolatePrimVar can fetch any primitive variable.

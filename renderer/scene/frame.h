@@ -43,6 +43,9 @@ struct ObjectDefinition {
 struct ObjectInstanceUse {
     std::shared_ptr<const ObjectDefinition> definition;
     M44f worldFromDefinition;
+    // An instance is shaded with the attributes current at ObjectInstance (RISpec §5.10): the
+    // definition keeps only geometry.
+    std::shared_ptr<const Attributes> attributes;
 };
 
 struct SceneLight {

@@ -202,7 +202,9 @@ void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
         return;
     }
     if (!RequireWorld("ObjectInstance", loc)) return;
-    state_->frame.instances.push_back({it->second, state_->transform});
+    if (!state_->snapshot)
+        state_->snapshot = std::make_shared<const Attributes>(state_->attributes);
+    state_->frame.instances.push_back({it->second, state_->transform, state_->snapshot});
 }
 
 // Motion blocks: the first sample of each moving request is used (no motion blur yet).

@@ -60,9 +60,10 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
       diagnostics_(diagnostics),
       system_(std::make_unique<sl::ShadingSystem>(diagnostics, frame.options.colorComponents)) {
     system_->SetSearchPath(ShaderSearchPath(frame));
-    for (const SceneShape& shape : frame.shapes) AddShapeGroup(shape);
+    for (const SceneShape& shape : frame.shapes) AddShapeGroup(shape, *shape.attributes);
     for (const ObjectInstanceUse& use : frame.instances)
-        for (const SceneShape& shape : use.definition->shapes) AddShapeGroup(shape);
+        for (const SceneShape& shape : use.definition->shapes)
+            AddShapeGroup(shape, *use.attributes);
     for (const SceneLight& light : frame.lights) {
         FrameLight frameLight;
         frameLight.instance = Instance(light.light.shader, sl::ShaderType::Light);
@@ -97,8 +98,8 @@ std::shared_ptr<sl::ShaderInstance> FrameShaders::Instance(const ShaderInstance&
     return instance;
 }
 
-void FrameShaders::AddShapeGroup(const SceneShape& shape) {
-    const Attributes* attributes = shape.attributes.get();
+void FrameShaders::AddShapeGroup(const SceneShape& shape, const Attributes& shadedWith) {
+    const Attributes* attributes = &shadedWith;
     auto [it, isNew] = groups_.try_emplace(attributes);
     ShaderGroup& group = it->second;
     if (isNew) {

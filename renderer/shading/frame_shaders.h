@@ -47,7 +47,8 @@ class FrameShaders {
   private:
     std::shared_ptr<sl::ShaderInstance> Instance(const ShaderInstance& request,
                                                  sl::ShaderType expected);
-    void AddShapeGroup(const SceneShape& shape);
+    // Records the shaders of `shadedWith` and binds the shape's primitive variables to them.
+    void AddShapeGroup(const SceneShape& shape, const Attributes& shadedWith);
 
     const Frame& frame_;
     Diagnostics& diagnostics_;

@@ -116,6 +116,17 @@ int CodeGenerator::Emit(Op op, std::initializer_list<int> args, int extra, int j
     return int(p_->code.size()) - 1;
 }
 
+bool CodeGenerator::DepthAvailable(const Node* at, int entries) {
+    // Instr::depth is one byte: mask stacks deeper than that are refused (never seen in a
+    // real shader; a fuzzer finds them).
+    if (depth_ + entries < 250) return true;
+    if (ok_) {
+        diagnostics_.Error(ToFileLoc(tree_, at->loc), "control flow is nested too deeply");
+    }
+    ok_ = false;
+    return false;
+}
+
 int CodeGenerator::PushRegion(int condition, bool alwaysVarying) {
     Region r;
     r.parent = region_;
@@ -248,6 +259,7 @@ int CodeGenerator::Condition(Node* e) {
 }
 
 void CodeGenerator::If(Node* s) {
+    if (!DepthAvailable(s, 2)) return;
     int c = Condition(s->kids[0]);
     const int outer = depth_, outerRegion = region_;
     const int entry = depth_ + 1;
@@ -271,6 +283,7 @@ void CodeGenerator::If(Node* s) {
 }
 
 void CodeGenerator::Loop(Node* s) {
+    if (!DepthAvailable(s, 3)) return;
     const bool isFor = s->kind == NodeKind::For;
     if (isFor && s->kids[0]) Expr(s->kids[0]);
     Node* condNode = isFor ? s->kids[1] : s->kids[0];
@@ -324,6 +337,7 @@ void CodeGenerator::Exit(Node* s) {
 }
 
 void CodeGenerator::LightLoop(Node* s) {
+    if (!DepthAvailable(s, 3)) return;
     std::vector<Node*> args(s->kids.begin(), s->kids.end() - 1);
     Node* body = s->kids.back();
     std::vector<int> regs;
@@ -640,6 +654,7 @@ int CodeGenerator::InlineCall(Node* e) {
             return Constant(0.0f);
         }
     }
+    if (!DepthAvailable(e, 2)) return Constant(0.0f);
     const auto& formals = f->kids[0]->kids;
     struct WriteBack {
         int array, index, temp;

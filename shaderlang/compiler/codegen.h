@@ -43,6 +43,7 @@ class CodeGenerator {
     int Emit(Op op, std::initializer_list<int> args, int extra = 0, int jump = -1);
     void SetLoc(const Node* n);
     int PushRegion(int condition, bool alwaysVarying);
+    bool DepthAvailable(const Node* at, int entries);
 
     void Statement(Node* s);
     void Declare(Node* decl, bool topLevel);

@@ -1,6 +1,8 @@
 #include "shaderlang/compiler/preprocessor.h"
 
 #include <cctype>
+#include <climits>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -428,12 +430,14 @@ class ConditionParser {
         if (op == ">=") return a >= b;
         if (op == "<") return a < b;
         if (op == ">") return a > b;
-        if (op == "<<") return b >= 0 && b < 63 ? a << b : 0;
+        // Wrapping arithmetic: overflow in a #if must not be undefined behaviour.
+        using U = unsigned long;
+        if (op == "<<") return b >= 0 && b < 63 ? long(U(a) << b) : 0;
         if (op == ">>") return b >= 0 && b < 63 ? a >> b : 0;
-        if (op == "+") return a + b;
-        if (op == "-") return a - b;
-        if (op == "*") return a * b;
-        if ((op == "/" || op == "%") && b == 0) {
+        if (op == "+") return long(U(a) + U(b));
+        if (op == "-") return long(U(a) - U(b));
+        if (op == "*") return long(U(a) * U(b));
+        if ((op == "/" || op == "%") && (b == 0 || (b == -1 && a == LONG_MIN))) {
             ok_ = false;
             return 0;
         }
@@ -441,7 +445,7 @@ class ConditionParser {
     }
     long Unary() {
         if (Accept("!")) return !Unary();
-        if (Accept("-")) return -Unary();
+        if (Accept("-")) return long(0ul - static_cast<unsigned long>(Unary()));
         if (Accept("+")) return Unary();
         if (Accept("~")) return ~Unary();
         if (Accept("(")) {
@@ -451,9 +455,9 @@ class ConditionParser {
         }
         Skip();
         if (pos_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[pos_]))) {
-            size_t end = 0;
-            long v = std::stol(s_.substr(pos_), &end, 0);
-            pos_ += end;
+            char* end = nullptr;
+            long v = std::strtol(s_.c_str() + pos_, &end, 0);  // saturates instead of throwing
+            pos_ = size_t(end - s_.c_str());
             while (pos_ < s_.size() && std::isalpha(static_cast<unsigned char>(s_[pos_]))) ++pos_;
             return v;
         }

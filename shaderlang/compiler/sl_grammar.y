@@ -56,6 +56,24 @@ Node* Name(gonio::sl::ParseState* state, NodeKind kind, const gonio::sl::SourceL
 }
 
 // Declarations share a type prefix; each declared variable gets a copy of it.
+// Array lengths are whole numbers up to 2^20 (larger ones are surely mistakes).
+int ArrayLength(gonio::sl::ParseState* state, const gonio::sl::SourceLoc& loc, float number) {
+    if (!(number >= 1 && number <= float(1 << 20)) || number != float(int(number))) {
+        state->Error(loc, "array length must be a positive integer");
+        return 1;
+    }
+    return int(number);
+}
+
+// break n / continue n: n is a small whole number.
+int LoopLevel(gonio::sl::ParseState* state, const gonio::sl::SourceLoc& loc, float number) {
+    if (!(number >= 1 && number <= 1000) || number != float(int(number))) {
+        state->Error(loc, "the loop level of break and continue must be a positive integer");
+        return 1;
+    }
+    return int(number);
+}
+
 void ApplyPrefix(Node* list, const Node* prefix) {
     for (Node* v : list->kids) {
         int length = v->declType.arrayLength;
@@ -214,14 +232,12 @@ def
     | IDENT '=' init { $$ = Name(state, NodeKind::VarDecl, @1, $1); $$->kids = {$3}; }
     | IDENT '[' NUMBER ']' {
           $$ = Name(state, NodeKind::VarDecl, @1, $1);
-          $$->declType.arrayLength = int($3);
-          if ($3 < 1 || $3 != float(int($3))) state->Error(@3, "array length must be a positive integer");
+          $$->declType.arrayLength = ArrayLength(state, @3, $3);
           $$->kids = {nullptr};
       }
     | IDENT '[' NUMBER ']' '=' init {
           $$ = Name(state, NodeKind::VarDecl, @1, $1);
-          $$->declType.arrayLength = int($3);
-          if ($3 < 1 || $3 != float(int($3))) state->Error(@3, "array length must be a positive integer");
+          $$->declType.arrayLength = ArrayLength(state, @3, $3);
           $$->kids = {$6};
       }
     ;
@@ -257,8 +273,8 @@ stmt
     | FOR '(' opt_expr ';' opt_expr ';' opt_expr ')' stmt {
           $$ = Make(state, NodeKind::For, @1, {$3, $5, $7, $9});
       }
-    | BREAK opt_level ';' { $$ = Make(state, NodeKind::Break, @1); $$->op = int($2); }
-    | CONTINUE opt_level ';' { $$ = Make(state, NodeKind::Continue, @1); $$->op = int($2); }
+    | BREAK opt_level ';' { $$ = Make(state, NodeKind::Break, @1); $$->op = LoopLevel(state, @2, $2); }
+    | CONTINUE opt_level ';' { $$ = Make(state, NodeKind::Continue, @1); $$->op = LoopLevel(state, @2, $2); }
     | RETURN opt_expr ';' { $$ = Make(state, NodeKind::Return, @1, {$2}); }
     | ILLUMINANCE '(' arg_list ')' stmt {
           $$ = $3; $$->kind = NodeKind::Illuminance; $$->loc = @1; $$->kids.push_back($5);

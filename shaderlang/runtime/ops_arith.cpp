@@ -247,12 +247,15 @@ void OpSelect(ExecState& x, const Instr& in) {
 
 // Clamps an array index into range; false (and a warning) when it was outside.
 static int ClampIndex(float index, int length, bool* outside) {
-    int k = int(std::floor(index));
-    if (k < 0 || k >= length || std::isnan(index)) {
+    if (!(index >= 0.0f)) {  // also NaN
         *outside = true;
-        return k < 0 || std::isnan(index) ? 0 : length - 1;
+        return 0;
     }
-    return k;
+    if (index >= float(length)) {
+        *outside = true;
+        return length - 1;
+    }
+    return int(index);
 }
 
 void OpIndexRead(ExecState& x, const Instr& in) {

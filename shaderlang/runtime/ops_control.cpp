@@ -86,6 +86,7 @@ void CopyPlanes(ExecState& x, int reg, const std::vector<float>& from, int width
 
 // Colour spaces of RISpec Table 11.1, converted to linear RGB (Rec. 709 primaries, D65).
 Imath::V3f HsvToRgb(float h, float s, float v) {
+    if (!std::isfinite(h)) h = 0.0f;
     h = (h - std::floor(h)) * 6.0f;
     int sector = int(h) % 6;
     float f = h - std::floor(h);

@@ -44,7 +44,6 @@ TEST(ParallelCylinders, DiffuseSingleScatteringMatchesPoulinFournier) {
     rib = std::regex_replace(rib, std::regex("\"float kd\" 0 \"float ks\" 1"),
                              "\"float kd\" 1 \"float ks\" 0");
     ASSERT_NE(rib.find("\"float kd\" 1 \"float ks\" 0"), std::string::npos);
-    const Frame frame = test::ParseFrame(rib);
     CheckCylinders(rib, 0, 4);
     CheckCylinders(rib, 29, 31);
     CheckCylinders(rib, 59, 61);

@@ -294,7 +294,7 @@ def quantize_sets_the_data_type(b, me):
     expect(formats == ["uint8", "uint16", "float"], f"data types {formats}")
 
 
-@check("batch", known_bug="Matte objects are written with alpha 1 instead of 0")
+@check("batch")
 def matte_object_has_zero_alpha(b, me):
     """RISpec §4.2 RiMatte: where a matte object is visible the image is transparent (alpha 0)
     and the matte hides what lies behind it."""
@@ -307,7 +307,7 @@ def matte_object_has_zero_alpha(b, me):
     expect(image.pixels[(1, 1)][3] == 1, "the card around the matte sphere is not opaque")
 
 
-@check("batch", known_bug="ObjectInstance ignores the attributes current at the instance")
+@check("batch")
 def object_instance_inherits_current_attributes(b, me):
     """RISpec §5.6 RiObjectInstance: 'The object inherits the current set of attributes defined
     in the graphics state.' A sphere defined without a colour, instanced after Color [1 0 0],
@@ -320,15 +320,17 @@ def object_instance_inherits_current_attributes(b, me):
            f"instance after Color [1 0 0] has colour {centre[:3]}")
 
 
-@check("batch", known_bug="ColorSamples with n != 3 overflows the 3-colour shading buffer")
+@check("batch", known_bug="ColorSamples colours are not converted to RGB through nRGB")
 def colour_samples_convert_to_rgb(b, me):
-    """RISpec §4.1.3 ColorSamples: colours have n components, converted to RGB by nRGB. Six
-    components of 0.5 whose nRGB rows are the identity then zeros give RGB 0.5 0.5 0.5."""
-    matrix = "[1 0 0  0 1 0  0 0 1  0 0 0  0 0 0  0 0 0] [1 0 0 0 0 0  0 1 0 0 0 0  0 0 1 0 0 0]"
+    """RISpec §4.1.3 ColorSamples: colours have n components, converted to RGB by nRGB (n rows
+    of 3). Components 0.2 0.2 0.2 0.1 0.1 0.1 whose rows map 1,4 to red, 2,5 to green and 3,6 to
+    blue give RGB 0.3 0.3 0.3."""
+    matrix = ("[1 0 0  0 1 0  0 0 1  1 0 0  0 1 0  0 0 1] "
+              "[1 0 0 0 0 0  0 1 0 0 0 0  0 0 1 0 0 0]")
     b.frame(me, "a", ortho(fmt="8 8", extra=f"ColorSamples {matrix}\n"),
-            "Color [0.5 0.5 0.5 0.5 0.5 0.5]\nPolygon \"P\" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]")
+            "Color [0.2 0.2 0.2 0.1 0.1 0.1]\nPolygon \"P\" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]")
     yield
-    expect_values(b.image(me, "a").pixels[(4, 4)], [0.5, 0.5, 0.5, 1], 1e-6, "grey pixel")
+    expect_values(b.image(me, "a").pixels[(4, 4)], [0.3, 0.3, 0.3, 1], 1e-6, "pixel")
 
 
 # ---- determinism, seeds, outputs (their own command lines) -----------------------------------
