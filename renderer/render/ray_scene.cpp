@@ -137,7 +137,7 @@ struct SceneLevel {
 struct InstancePlacement {
     int level;  // index into Impl::definitions
     M44f worldFromDefinition, definitionFromWorld;
-    const Attributes* attributes;
+    const ObjectInstanceUse* use;
 };
 
 struct RayScene::Impl {
@@ -393,8 +393,8 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
                                 use.worldFromDefinition.getValue());
         auto record = std::make_unique<GeometryRecord>();
         record->instance = static_cast<int>(s.instances.size());
-        s.instances.push_back({it->second, use.worldFromDefinition,
-                               use.worldFromDefinition.inverse(), use.attributes.get()});
+        s.instances.push_back(
+            {it->second, use.worldFromDefinition, use.worldFromDefinition.inverse(), &use});
         s.Attach(s.top, g, std::move(record));
     }
     rtcCommitScene(s.top.scene);
@@ -523,7 +523,9 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
         record = s.definitions[placement.level].records[hit.geomID].get();
         worldFromSpace = placement.worldFromDefinition;
         spaceFromWorld = placement.definitionFromWorld;
-        instanceAttributes = placement.attributes;
+        const ObjectInstanceUse& use = *placement.use;
+        instanceAttributes =
+            use.shapeAttributes[record->shape - use.definition->shapes.data()].get();
     } else {
         record = s.top.records[hit.geomID].get();
     }

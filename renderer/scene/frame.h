@@ -38,14 +38,16 @@ struct SceneShape {
 
 struct ObjectDefinition {
     std::vector<SceneShape> shapes;
+    std::shared_ptr<const Attributes> base;  // the attributes current at ObjectBegin
 };
 
 struct ObjectInstanceUse {
     std::shared_ptr<const ObjectDefinition> definition;
     M44f worldFromDefinition;
-    // An instance is shaded with the attributes current at ObjectInstance (RISpec §5.10): the
-    // definition keeps only geometry.
-    std::shared_ptr<const Attributes> attributes;
+    // The attributes each shape of the definition is shaded with: those current at
+    // ObjectInstance, except what the definition itself set (as if its requests were replayed
+    // at the instance). One per definition shape.
+    std::vector<std::shared_ptr<const Attributes>> shapeAttributes;
 };
 
 struct SceneLight {

@@ -15,6 +15,31 @@ std::string HandleText(const RtHandle& handle) {
     return handle.isString ? "\"" + handle.text + "\"" : handle.text;
 }
 
+bool SameShader(const ShaderInstance& a, const ShaderInstance& b) {
+    return a.name == b.name && a.loc.line == b.loc.line && a.loc.column == b.loc.column &&
+           a.loc.file == b.loc.file;
+}
+
+// What a definition's shape is shaded with at an instance: the instance's attributes, with
+// every attribute the definition changed after ObjectBegin taken from the definition.
+Attributes InstanceAttributes(const Attributes& instance, const Attributes& begin,
+                              const Attributes& shape) {
+    Attributes merged = instance;
+    if (shape.color != begin.color) merged.color = shape.color;
+    if (shape.opacity != begin.opacity) merged.opacity = shape.opacity;
+    if (shape.textureCoordinates != begin.textureCoordinates)
+        merged.textureCoordinates = shape.textureCoordinates;
+    if (!SameShader(shape.surface, begin.surface)) merged.surface = shape.surface;
+    if (!SameShader(shape.displacement, begin.displacement))
+        merged.displacement = shape.displacement;
+    if (!SameShader(shape.atmosphere, begin.atmosphere)) merged.atmosphere = shape.atmosphere;
+    if (shape.activeLights != begin.activeLights) merged.activeLights = shape.activeLights;
+    if (shape.twoSided != begin.twoSided) merged.twoSided = shape.twoSided;
+    if (shape.matte != begin.matte) merged.matte = shape.matte;
+    if (shape.identifier != begin.identifier) merged.identifier = shape.identifier;
+    return merged;
+}
+
 }  // namespace
 
 SceneBuilder::SceneBuilder(std::string sceneFile, Diagnostics& diagnostics, FrameHandler onFrame)
@@ -173,6 +198,7 @@ void SceneBuilder::ObjectBegin(const RtHandle& handle, const FileLoc& loc) {
     state_->savedTransforms.push_back(state_->transform);
     state_->transform = M44f();
     state_->openObject = std::make_shared<ObjectDefinition>();
+    state_->openObject->base = std::make_shared<const Attributes>(state_->attributes);
     state_->openObjectHandle = handle.text;
 }
 
@@ -202,9 +228,18 @@ void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
         return;
     }
     if (!RequireWorld("ObjectInstance", loc)) return;
-    if (!state_->snapshot)
-        state_->snapshot = std::make_shared<const Attributes>(state_->attributes);
-    state_->frame.instances.push_back({it->second, state_->transform, state_->snapshot});
+    ObjectInstanceUse use{it->second, state_->transform, {}};
+    const ObjectDefinition& definition = *it->second;
+    for (size_t i = 0; i < definition.shapes.size(); ++i) {
+        const auto& own = definition.shapes[i].attributes;
+        if (i > 0 && own == definition.shapes[i - 1].attributes) {
+            use.shapeAttributes.push_back(use.shapeAttributes.back());
+            continue;
+        }
+        use.shapeAttributes.push_back(std::make_shared<const Attributes>(
+            InstanceAttributes(state_->attributes, *definition.base, *own)));
+    }
+    state_->frame.instances.push_back(std::move(use));
 }
 
 // Motion blocks: the first sample of each moving request is used (no motion blur yet).

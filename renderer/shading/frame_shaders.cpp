@@ -62,8 +62,8 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
     system_->SetSearchPath(ShaderSearchPath(frame));
     for (const SceneShape& shape : frame.shapes) AddShapeGroup(shape, *shape.attributes);
     for (const ObjectInstanceUse& use : frame.instances)
-        for (const SceneShape& shape : use.definition->shapes)
-            AddShapeGroup(shape, *use.attributes);
+        for (size_t i = 0; i < use.definition->shapes.size(); ++i)
+            AddShapeGroup(use.definition->shapes[i], *use.shapeAttributes[i]);
     for (const SceneLight& light : frame.lights) {
         FrameLight frameLight;
         frameLight.instance = Instance(light.light.shader, sl::ShaderType::Light);
