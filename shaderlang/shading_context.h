@@ -17,9 +17,9 @@ namespace gonio::sl {
 struct LightResult {
     // Per point: L points from the surface point towards the light (the surface's view, as
     // inside illuminance), Cl and Ol the arriving colour and opacity (ncomps each).
-    std::vector<float> L;   // 3 × n
-    std::vector<float> Cl;  // ncomps × n
-    std::vector<float> Ol;  // ncomps × n
+    std::vector<float> L;      // 3 × n
+    std::vector<float> Cl;     // ncomps × n
+    std::vector<float> Ol;     // ncomps × n
     std::vector<uint8_t> lit;  // per point: 1 if the light's illuminate/solar reached it
     bool ambient = false;      // a light without illuminate or solar: only ambient() sees it
     std::string category;      // the light's __category parameter
@@ -27,7 +27,7 @@ struct LightResult {
 };
 
 class ShadingContext {
-public:
+  public:
     virtual ~ShadingContext() = default;
 
     int PointCount() const { return n_; }
@@ -81,7 +81,7 @@ public:
     virtual const int* UNeighbours() const = 0;
     virtual const int* VNeighbours() const = 0;
 
-protected:
+  protected:
     int n_ = 0;
     int colorComponents_ = 3;
 };

@@ -24,13 +24,18 @@ struct TypeSpec {
     // Floats one element occupies: colours have `colorComponents` (ColorSamples, 3 by default).
     int Width(int colorComponents) const {
         switch (base) {
-            case BaseType::Float: return 1;
-            case BaseType::Color: return colorComponents;
+            case BaseType::Float:
+                return 1;
+            case BaseType::Color:
+                return colorComponents;
             case BaseType::Point:
             case BaseType::Vector:
-            case BaseType::Normal: return 3;
-            case BaseType::Matrix: return 16;
-            default: return 0;
+            case BaseType::Normal:
+                return 3;
+            case BaseType::Matrix:
+                return 16;
+            default:
+                return 0;
         }
     }
     bool operator==(const TypeSpec& o) const {

@@ -23,9 +23,9 @@ class GlobalsView;  // shaderlang/runtime/globals_view.h
 
 struct FloatArg {
     float* data = nullptr;
-    int width = 0;       // floats per point (element width × array length)
+    int width = 0;  // floats per point (element width × array length)
     bool varying = false;
-    int n = 1;           // points in the batch (a uniform arg still knows n)
+    int n = 1;  // points in the batch (a uniform arg still knows n)
 
     float& At(int component, int point) const {
         return varying ? data[component * n + point] : data[component];
@@ -41,10 +41,10 @@ struct BuiltinCall {
     const uint8_t* active = nullptr;  // nullptr: all points active
     int argCount = 0;
     TypeSpec argTypes[16];
-    FloatArg args[16];        // numeric arguments (unused entries for string arguments)
-    StringArg strings[16];    // string arguments (unused entries for numeric arguments)
+    FloatArg args[16];      // numeric arguments (unused entries for string arguments)
+    StringArg strings[16];  // string arguments (unused entries for numeric arguments)
     TypeSpec resultType;
-    FloatArg result;          // unused for void and string results
+    FloatArg result;  // unused for void and string results
     StringArg stringResult;
     ShadingContext* context = nullptr;  // renderer state, lights, spaces (shading_context.h)
     int colorComponents = 3;
