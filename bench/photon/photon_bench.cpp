@@ -206,7 +206,7 @@ void BM_RawEmbreeBeams(benchmark::State& state) {
 void BM_RaySceneBeams(benchmark::State& state) {
     TraceBeams(state, [](const Fixture& f, const BeamRay& r) {
         RayHit hit;
-        return f.ours->Intersect(r.org, r.dir, 0, std::numeric_limits<float>::infinity(), &hit);
+        return f.ours->Intersect(r.org, r.dir, 0, std::numeric_limits<float>::infinity(), 0, &hit);
     });
 }
 

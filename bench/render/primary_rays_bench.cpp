@@ -171,7 +171,7 @@ void BM_RayScene(benchmark::State& state) {
     Fixture& f = Scene(state.range(0));
     TraceAll(state, f.rays, [&](const CameraRay& ray) {
         RayHit hit;
-        return f.ours->Intersect(ray.org, ray.dir, ray.tnear, ray.tfar, &hit);
+        return f.ours->Intersect(ray.org, ray.dir, ray.tnear, ray.tfar, 0, &hit);
     });
 }
 

@@ -55,7 +55,7 @@ struct TraceContext {
 // it has escaped once it leaves the slab [zMin, zMax] of the geometry.
 Segment TraceSegment(const TraceContext& c, V3f& org, const V3f& dir, RayHit* hit) {
     if (!c.settings.periodic) {
-        return c.scene.Intersect(org, dir, 0, std::numeric_limits<float>::infinity(), hit)
+        return c.scene.Intersect(org, dir, 0, std::numeric_limits<float>::infinity(), 0, hit)
                    ? Segment::Hit
                    : Segment::Escaped;
     }
@@ -71,7 +71,7 @@ Segment TraceSegment(const TraceContext& c, V3f& org, const V3f& dir, RayHit* hi
                          : dir.z < 0 ? (c.zMin - org.z) / dir.z
                                      : inf;
         const float tWall = std::max(0.0f, std::min(tx, ty));
-        if (c.scene.Intersect(org, dir, 0, std::min(tWall, std::max(tz, 0.0f)), hit))
+        if (c.scene.Intersect(org, dir, 0, std::min(tWall, std::max(tz, 0.0f)), 0, hit))
             return Segment::Hit;
         if (tz <= tWall) return Segment::Escaped;
         org += tWall * dir;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/motion.h"
+
 namespace gonio {
 namespace {
 
@@ -27,6 +29,8 @@ Imath::V2f ConcentricDisk(float u, float v) {
 
 Camera::Camera(const Options& options)
     : worldFromCamera_(options.cameraFromWorld.inverse()),
+      motionTimes_(options.cameraMotionTimes),
+      cameraFromWorldMotion_(options.cameraMotion),
       perspective_(options.projection == "perspective"),
       tanHalfFov_(std::tan(options.fov * kPi / 360.f)),
       xres_(options.xres),
@@ -71,7 +75,8 @@ Imath::M44f Camera::RasterFromNdc() const {
     return m;
 }
 
-CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float lensV) const {
+CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float lensV,
+                              float time) const {
     const float sx = screen_[0] + rasterX / xres_ * (screen_[1] - screen_[0]);
     const float sy = screen_[3] - rasterY / yres_ * (screen_[3] - screen_[2]);
     Imath::V3f org(0, 0, 0), dir(0, 0, 1);
@@ -87,9 +92,13 @@ CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float l
         org = Imath::V3f(lens.x, lens.y, 0);
         dir = (focus - org) / focalDistance_;
     }
+    const Imath::M44f worldFromCamera =
+        motionTimes_.empty() ? worldFromCamera_
+                             : TransformAt(motionTimes_, cameraFromWorldMotion_, time).inverse();
     CameraRay ray;
-    worldFromCamera_.multVecMatrix(org, ray.org);
-    worldFromCamera_.multDirMatrix(dir, ray.dir);
+    worldFromCamera.multVecMatrix(org, ray.org);
+    worldFromCamera.multDirMatrix(dir, ray.dir);
+    ray.time = time;
     ray.tnear = nearClip_;
     ray.tfar = farClip_;
     return ray;

@@ -7,6 +7,8 @@
 #include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>
 
+#include <vector>
+
 #include "scene/options.h"
 
 namespace gonio {
@@ -14,6 +16,7 @@ namespace gonio {
 struct CameraRay {
     Imath::V3f org, dir;  // world space; dir is not unit length (its camera-space z is 1)
     float tnear = 0, tfar = 0;
+    float time = 0;  // within the shutter interval
 };
 
 class Camera {
@@ -21,8 +24,10 @@ class Camera {
     explicit Camera(const Options& options);
 
     // The ray through raster position (x, y) (pixels from the top-left corner of the frame),
-    // with (lensU, lensV) in [0,1)² choosing the point on the lens.
-    CameraRay GenerateRay(float rasterX, float rasterY, float lensU, float lensV) const;
+    // with (lensU, lensV) in [0,1)² choosing the point on the lens, at `time` (a moving
+    // camera: Options::cameraMotion).
+    CameraRay GenerateRay(float rasterX, float rasterY, float lensU, float lensV,
+                          float time = 0) const;
 
     const Imath::M44f& WorldFromCamera() const { return worldFromCamera_; }
     // RISpec's screen space from camera space (projective for perspective), and raster and NDC
@@ -35,6 +40,8 @@ class Camera {
 
   private:
     Imath::M44f worldFromCamera_;
+    std::vector<float> motionTimes_;
+    std::vector<Imath::M44f> cameraFromWorldMotion_;
     bool perspective_;
     float tanHalfFov_;
     float screen_[4];  // left right bottom top

@@ -68,7 +68,8 @@ bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
     while (true) {
         RayHit hit;
         ++rays_;
-        if (!scene_.Intersect(ray.org, ray.dir, sample.ray.tnear, ray.tfar, &hit)) return false;
+        if (!scene_.Intersect(ray.org, ray.dir, sample.ray.tnear, ray.tfar, ray.time, &hit))
+            return false;
         sample.ray.tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
         scene_.Evaluate(ray.org, ray.dir, hit, sp);
         *t = hit.t;
@@ -227,7 +228,11 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
                             sample.x = px + (sx + random.Next()) / xsamples;
                             sample.y = py + (sy + random.Next()) / ysamples;
                             const float lensU = random.Next(), lensV = random.Next();
-                            sample.ray = camera.GenerateRay(sample.x, sample.y, lensU, lensV);
+                            const float time =
+                                options.shutterOpen +
+                                random.Next() *
+                                    std::max(0.f, options.shutterClose - options.shutterOpen);
+                            sample.ray = camera.GenerateRay(sample.x, sample.y, lensU, lensV, time);
                             samples.push_back(sample);
                         }
                     }

@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "render/motion.h"
 #include "render/shape_evaluation.h"
 
 namespace gonio {
@@ -137,7 +138,10 @@ struct SceneLevel {
 struct InstancePlacement {
     int level;  // index into Impl::definitions
     M44f worldFromDefinition, definitionFromWorld;
-    const ObjectInstanceUse* use;
+    const ObjectInstanceUse* use;  // null for a moving shape placed on its own
+    // A moving placement: worldFromDefinition at these times.
+    std::vector<float> motionTimes;
+    std::vector<M44f> motion;
 };
 
 struct RayScene::Impl {
@@ -156,7 +160,17 @@ struct RayScene::Impl {
         if (device) rtcReleaseDevice(device);
     }
 
-    void AddShape(SceneLevel& level, const SceneShape& shape);
+    void AddShape(SceneLevel& level, const SceneShape& shape, const M44f& spaceFromObject);
+    void Place(int level, const M44f& worldFromDefinition, const ObjectInstanceUse* use,
+               const std::vector<float>& motionTimes, const std::vector<M44f>& motion);
+    // A scene of its own for shapes placed by Place: in their definition space, or, for one
+    // moving shape (`inObjectSpace`), in its object space.
+    int NewLevel(const std::vector<const SceneShape*>& shapes, bool inObjectSpace);
+    float EmbreeTime(float time) const {
+        return shutterClose > shutterOpen ? (time - shutterOpen) / (shutterClose - shutterOpen)
+                                          : 0.f;
+    }
+    float shutterOpen = 0, shutterClose = 0;
     void Attach(SceneLevel& level, RTCGeometry geometry, std::unique_ptr<GeometryRecord> record);
     RTCGeometry MakeMesh(const TriangleMesh& mesh, const M44f& m);
     RTCGeometry MakeQuadric(GeometryRecord& record, const QuadricShape& shape);
@@ -321,11 +335,12 @@ RTCGeometry RayScene::Impl::MakePoints(const PointSet& points, const M44f& m) {
     return g;
 }
 
-void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape) {
+void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
+                              const M44f& spaceFromObject) {
     auto record = std::make_unique<GeometryRecord>();
     record->shape = &shape;
-    record->spaceFromObject = shape.worldFromObject;
-    record->objectFromSpace = shape.worldFromObject.inverse();
+    record->spaceFromObject = spaceFromObject;
+    record->objectFromSpace = spaceFromObject.inverse();
     RTCGeometry g = nullptr;
     const M44f& m = record->spaceFromObject;
     if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
@@ -372,32 +387,66 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
     rtcSetDeviceErrorFunction(s.device, ReportEmbreeError, &diagnostics);
     s.top.scene = rtcNewScene(s.device);
     rtcSetSceneFlags(s.top.scene, RTC_SCENE_FLAG_ROBUST);
-    for (const SceneShape& shape : frame.shapes) s.AddShape(s.top, shape);
-
+    s.shutterOpen = frame.options.shutterOpen;
+    s.shutterClose = std::max(frame.options.shutterClose, frame.options.shutterOpen);
+    for (const SceneShape& shape : frame.shapes) {
+        if (shape.worldFromObjectMotion.empty()) {
+            s.AddShape(s.top, shape, shape.worldFromObject);
+        } else {
+            // A moving shape is placed like an object instance whose placement moves.
+            s.Place(s.NewLevel({&shape}, true), M44f(), nullptr, shape.motionTimes,
+                    shape.worldFromObjectMotion);
+        }
+    }
     // Each object definition becomes one Embree scene, placed by instance geometries.
     std::map<const ObjectDefinition*, int> levelOf;
     for (const ObjectInstanceUse& use : frame.instances) {
-        auto [it, isNew] = levelOf.emplace(use.definition.get(), int(s.definitions.size()));
-        if (isNew) {
-            SceneLevel level;
-            level.scene = rtcNewScene(s.device);
-            rtcSetSceneFlags(level.scene, RTC_SCENE_FLAG_ROBUST);
-            for (const SceneShape& shape : use.definition->shapes) s.AddShape(level, shape);
-            rtcCommitScene(level.scene);
-            s.definitions.push_back(std::move(level));
+        auto it = levelOf.find(use.definition.get());
+        if (it == levelOf.end()) {
+            std::vector<const SceneShape*> shapes;
+            for (const SceneShape& shape : use.definition->shapes) shapes.push_back(&shape);
+            it = levelOf.emplace(use.definition.get(), s.NewLevel(shapes, false)).first;
         }
-        RTCGeometry g = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_INSTANCE);
-        rtcSetGeometryInstancedScene(g, s.definitions[it->second].scene);
-        // Imath's row-vector matrix, read column-major, is the column-vector matrix Embree wants.
-        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
-                                use.worldFromDefinition.getValue());
-        auto record = std::make_unique<GeometryRecord>();
-        record->instance = static_cast<int>(s.instances.size());
-        s.instances.push_back(
-            {it->second, use.worldFromDefinition, use.worldFromDefinition.inverse(), &use});
-        s.Attach(s.top, g, std::move(record));
+        s.Place(it->second, use.worldFromDefinition, &use, use.motionTimes,
+                use.worldFromDefinitionMotion);
     }
     rtcCommitScene(s.top.scene);
+}
+
+int RayScene::Impl::NewLevel(const std::vector<const SceneShape*>& shapes, bool inObjectSpace) {
+    SceneLevel level;
+    level.scene = rtcNewScene(device);
+    rtcSetSceneFlags(level.scene, RTC_SCENE_FLAG_ROBUST);
+    for (const SceneShape* shape : shapes)
+        AddShape(level, *shape, inObjectSpace ? M44f() : shape->worldFromObject);
+    rtcCommitScene(level.scene);
+    definitions.push_back(std::move(level));
+    return static_cast<int>(definitions.size()) - 1;
+}
+
+void RayScene::Impl::Place(int level, const M44f& worldFromDefinition, const ObjectInstanceUse* use,
+                           const std::vector<float>& motionTimes, const std::vector<M44f>& motion) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, definitions[level].scene);
+    // Imath's row-vector matrix, read column-major, is the column-vector matrix Embree wants.
+    if (motion.empty()) {
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
+                                worldFromDefinition.getValue());
+    } else {
+        // Embree's time steps divide its time [0, 1], which is our shutter interval.
+        const unsigned steps = std::max<unsigned>(2, motion.size());
+        rtcSetGeometryTimeStepCount(g, steps);
+        for (unsigned i = 0; i < steps; ++i) {
+            const float time = shutterOpen + (shutterClose - shutterOpen) * i / (steps - 1);
+            rtcSetGeometryTransform(g, i, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
+                                    TransformAt(motionTimes, motion, time).getValue());
+        }
+    }
+    auto record = std::make_unique<GeometryRecord>();
+    record->instance = static_cast<int>(instances.size());
+    instances.push_back(
+        {level, worldFromDefinition, worldFromDefinition.inverse(), use, motionTimes, motion});
+    Attach(top, g, std::move(record));
 }
 
 RayScene::~RayScene() = default;
@@ -408,7 +457,7 @@ size_t RayScene::GeometryCount() const {
     return n;
 }
 
-bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar,
+bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
                          RayHit* hit) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -417,7 +466,7 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
     rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
     rh.ray.tnear = tnear;
     rh.ray.tfar = tfar;
-    rh.ray.time = 0;
+    rh.ray.time = impl_->EmbreeTime(time);
     rh.ray.mask = ~0u;
     rh.ray.id = 0;
     rh.ray.flags = 0;
@@ -426,6 +475,7 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
     rtcIntersect1(impl_->top.scene, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     hit->t = rh.ray.tfar;
+    hit->time = time;
     hit->geomID = rh.hit.geomID;
     hit->primID = rh.hit.primID;
     hit->instID = rh.hit.instID[0];
@@ -435,7 +485,7 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
     return true;
 }
 
-bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar) const {
+bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray;
@@ -443,7 +493,7 @@ bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar)
     ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
     ray.tnear = tnear;
     ray.tfar = tfar;
-    ray.time = 0;
+    ray.time = impl_->EmbreeTime(time);
     ray.mask = ~0u;
     ray.id = 0;
     ray.flags = 0;
@@ -521,11 +571,16 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     if (hit.instID != RTC_INVALID_GEOMETRY_ID) {
         const InstancePlacement& placement = s.instances[s.top.records[hit.instID]->instance];
         record = s.definitions[placement.level].records[hit.geomID].get();
-        worldFromSpace = placement.worldFromDefinition;
-        spaceFromWorld = placement.definitionFromWorld;
-        const ObjectInstanceUse& use = *placement.use;
-        instanceAttributes =
-            use.shapeAttributes[record->shape - use.definition->shapes.data()].get();
+        if (placement.motion.empty()) {
+            worldFromSpace = placement.worldFromDefinition;
+            spaceFromWorld = placement.definitionFromWorld;
+        } else {
+            worldFromSpace = TransformAt(placement.motionTimes, placement.motion, hit.time);
+            spaceFromWorld = worldFromSpace.inverse();
+        }
+        if (const ObjectInstanceUse* use = placement.use)
+            instanceAttributes =
+                use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
     } else {
         record = s.top.records[hit.geomID].get();
     }

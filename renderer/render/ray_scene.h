@@ -16,6 +16,7 @@ namespace gonio {
 
 struct RayHit {
     float t = 0;
+    float time = 0;  // when the ray travelled (shutter time)
     unsigned geomID = 0, primID = 0, instID = 0;
     float u = 0, v = 0;
     Imath::V3f Ng;  // as Embree reports it: not normalised, in the hit geometry's space
@@ -28,11 +29,13 @@ class RayScene {
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
-    // The nearest hit of org + t·dir with tnear <= t <= tfar.
+    // The nearest hit of org + t·dir with tnear <= t <= tfar, at `time` in the shutter
+    // interval (moving geometry is where it is then).
     bool Intersect(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
-                   RayHit* hit) const;
-    // Whether anything lies on org + t·dir for tnear <= t <= tfar.
-    bool Occluded(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar) const;
+                   float time, RayHit* hit) const;
+    // Whether anything lies on org + t·dir for tnear <= t <= tfar at `time`.
+    bool Occluded(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
+                  float time) const;
     // The surface at a hit, in world space, with Cs, Os, s, t interpolated.
     SurfacePoint Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit) const;
     // The same into an existing point, reusing its colour storage (no allocation in loops).

@@ -28,9 +28,8 @@ bool LightCastsShadows(const Attributes& attributes) {
 
 }  // namespace
 
-bool SceneBuilder::SkipMotionSample() {
-    if (state_->motionRequestCount < 0) return false;
-    return ++state_->motionRequestCount > 1;
+int SceneBuilder::MotionSampleIndex() {
+    return state_->motionRequestCount < 0 ? -1 : state_->motionRequestCount++;
 }
 
 // ---- colour and shaders ---------------------------------------------------------------------
@@ -239,19 +238,33 @@ void SceneBuilder::TrimCurve(const std::vector<int>&, const std::vector<int>&,
 // RIB uses row vectors (p' = p·M), as Imath does: a new transform applies to object points
 // first, so it multiplies from the left.
 
-void SceneBuilder::ConcatTransform(const M44f& m) {
-    if (SkipMotionSample()) return;
-    state_->transform = m * state_->transform;
+void SceneBuilder::ChangeTransform(const M44f& m, bool concatenate) {
+    auto apply = [&](const M44f& base) { return concatenate ? m * base : m; };
+    const int k = MotionSampleIndex();
+    if (k < 0) {
+        state_->transform = apply(state_->transform);
+        for (M44f& sample : state_->transformSamples) sample = apply(sample);
+        return;
+    }
+    const std::vector<M44f>& base = state_->motionBase;
+    if (k >= int(base.size())) return;  // more requests than times: the extra ones are ignored
+    if (k == 0) {
+        // Until the block's later requests arrive, every time sees the first one.
+        state_->transformTimes = state_->motionTimes;
+        state_->transformSamples.clear();
+        for (const M44f& b : base) state_->transformSamples.push_back(apply(b));
+        state_->transform = state_->transformSamples[0];
+        return;
+    }
+    for (size_t i = k; i < base.size(); ++i) state_->transformSamples[i] = apply(base[i]);
 }
 
-void SceneBuilder::Identity(const FileLoc&) {
-    if (SkipMotionSample()) return;
-    state_->transform = M44f();
-}
+void SceneBuilder::ConcatTransform(const M44f& m) { ChangeTransform(m, true); }
+
+void SceneBuilder::Identity(const FileLoc&) { ChangeTransform(M44f(), false); }
 
 void SceneBuilder::Transform(const RtMatrix& m, const FileLoc&) {
-    if (SkipMotionSample()) return;
-    state_->transform = ToM44f(m);
+    ChangeTransform(ToM44f(m), false);
 }
 
 void SceneBuilder::ConcatTransform(const RtMatrix& m, const FileLoc&) {
@@ -335,9 +348,8 @@ void SceneBuilder::ScopedCoordinateSystem(const std::string& space, const FileLo
 }
 
 void SceneBuilder::CoordSysTransform(const std::string& space, const FileLoc& loc) {
-    if (SkipMotionSample()) return;
     if (space == "world" && state_->inWorld) {
-        state_->transform = M44f();
+        ChangeTransform(M44f(), false);
         return;
     }
     const auto& spaces = state_->inWorld ? state_->frame.namedSpaces : state_->namedSpaces;
@@ -346,7 +358,7 @@ void SceneBuilder::CoordSysTransform(const std::string& space, const FileLoc& lo
         diagnostics_.Error(loc, "CoordSysTransform: no coordinate system named \"" + space + "\"");
         return;
     }
-    state_->transform = it->second;
+    ChangeTransform(it->second, false);
 }
 
 }  // namespace gonio

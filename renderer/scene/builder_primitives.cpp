@@ -21,7 +21,11 @@ bool SceneBuilder::StartPrimitive(const char* request, const FileLoc& loc) {
                                     " is a primitive and is only valid inside WorldBegin/WorldEnd");
         return false;
     }
-    return !SkipMotionSample();
+    const int sample = MotionSampleIndex();
+    if (sample == 0)
+        diagnostics_.NoteOnce("deformation", loc,
+                              "moving primitives (deformation blur) use their first sample");
+    return sample <= 0;
 }
 
 bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
@@ -35,6 +39,8 @@ void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
         state_->snapshot = std::make_shared<const Attributes>(state_->attributes);
     shape.attributes = state_->snapshot;
     shape.worldFromObject = state_->transform;
+    shape.motionTimes = state_->transformTimes;
+    shape.worldFromObjectMotion = state_->transformSamples;
     shape.loc = loc;
     // Handedness of camera space from object space; camera space is left-handed.
     const M44f cameraFromObject =

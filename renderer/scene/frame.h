@@ -31,6 +31,9 @@ struct SceneShape {
     std::shared_ptr<const Attributes> attributes;
     // World (or, inside an object definition, definition) space from the shape's object space.
     M44f worldFromObject;
+    // Transformation motion blur: world from object at each of these times (empty: static).
+    std::vector<float> motionTimes;
+    std::vector<M44f> worldFromObjectMotion;
     // Reverse the outward normal (Orientation "inside", or "lh"/"rh" against the handedness).
     bool flipNormals = false;
     FileLoc loc;
@@ -48,6 +51,8 @@ struct ObjectInstanceUse {
     // ObjectInstance, except what the definition itself set (as if its requests were replayed
     // at the instance). One per definition shape.
     std::vector<std::shared_ptr<const Attributes>> shapeAttributes;
+    std::vector<float> motionTimes;  // a moving instance: its placement at these times
+    std::vector<M44f> worldFromDefinitionMotion;
 };
 
 struct SceneLight {

@@ -51,6 +51,9 @@ struct Options {
     std::string errorHandler = "print";
     // The transform current at WorldBegin: camera space from world space (RIB row vectors).
     Imath::M44f cameraFromWorld;
+    // A moving camera: cameraFromWorld at each of these times (empty: static).
+    std::vector<float> cameraMotionTimes;
+    std::vector<Imath::M44f> cameraMotion;
     // Every Option request by name, merged (searchpath, BRDFLight, statistics, ...).
     std::map<std::string, ParamList> user;
 };

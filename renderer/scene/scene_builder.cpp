@@ -57,6 +57,18 @@ Attributes& SceneBuilder::MutableAttributes() {
     return state_->attributes;
 }
 
+void SceneBuilder::SaveTransform() {
+    state_->savedTransforms.push_back(state_->transform);
+    state_->savedMotion.emplace_back(state_->transformTimes, state_->transformSamples);
+}
+
+void SceneBuilder::RestoreTransform() {
+    state_->transform = state_->savedTransforms.back();
+    state_->savedTransforms.pop_back();
+    std::tie(state_->transformTimes, state_->transformSamples) = state_->savedMotion.back();
+    state_->savedMotion.pop_back();
+}
+
 void SceneBuilder::Finish(const FileLoc& endOfInput) {
     for (size_t i = state_->blocks.size(); i-- > 0;)
         diagnostics_.Error(state_->blockLocs[i],
@@ -113,7 +125,7 @@ void SceneBuilder::FrameBegin(int frame, const FileLoc& loc) {
     state_->frameNumber = frame;
     state_->savedOptions.push_back(state_->options);
     state_->savedAttributes.push_back(state_->attributes);
-    state_->savedTransforms.push_back(state_->transform);
+    SaveTransform();
 }
 
 void SceneBuilder::FrameEnd(const FileLoc& loc) {
@@ -122,16 +134,17 @@ void SceneBuilder::FrameEnd(const FileLoc& loc) {
     state_->savedOptions.pop_back();
     MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
-    state_->transform = state_->savedTransforms.back();
-    state_->savedTransforms.pop_back();
+    RestoreTransform();
 }
 
 void SceneBuilder::WorldBegin(const FileLoc& loc) {
     if (!RequireOptions("WorldBegin", loc)) return;
     PushBlock(Block::World, loc);
     state_->savedAttributes.push_back(state_->attributes);
-    state_->savedTransforms.push_back(state_->transform);
+    SaveTransform();
     state_->options.cameraFromWorld = state_->transform;
+    state_->options.cameraMotionTimes = state_->transformTimes;
+    state_->options.cameraMotion = state_->transformSamples;
     state_->inWorld = true;
     state_->frame = Frame();
     state_->frame.number = state_->frameNumber;
@@ -143,6 +156,8 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
         state_->frame.namedSpaces[name] = m * worldFromCamera;
     state_->frame.namedSpaces["camera"] = worldFromCamera;
     state_->transform = M44f();
+    state_->transformTimes.clear();
+    state_->transformSamples.clear();
     state_->lightHandles.clear();
     for (SceneLight light : state_->cameraLights) {
         light.light.shader.worldFromShader = light.light.shader.worldFromShader * worldFromCamera;
@@ -155,8 +170,7 @@ void SceneBuilder::WorldEnd(const FileLoc& loc) {
     state_->inWorld = false;
     MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
-    state_->transform = state_->savedTransforms.back();
-    state_->savedTransforms.pop_back();
+    RestoreTransform();
     if (onFrame_) onFrame_(state_->frame);
     state_->frame = Frame();
 }
@@ -164,26 +178,24 @@ void SceneBuilder::WorldEnd(const FileLoc& loc) {
 void SceneBuilder::AttributeBegin(const FileLoc& loc) {
     PushBlock(Block::Attribute, loc);
     state_->savedAttributes.push_back(state_->attributes);
-    state_->savedTransforms.push_back(state_->transform);
+    SaveTransform();
 }
 
 void SceneBuilder::AttributeEnd(const FileLoc& loc) {
     if (!PopBlock(Block::Attribute, "AttributeEnd", loc)) return;
     MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
-    state_->transform = state_->savedTransforms.back();
-    state_->savedTransforms.pop_back();
+    RestoreTransform();
 }
 
 void SceneBuilder::TransformBegin(const FileLoc& loc) {
     PushBlock(Block::Transform, loc);
-    state_->savedTransforms.push_back(state_->transform);
+    SaveTransform();
 }
 
 void SceneBuilder::TransformEnd(const FileLoc& loc) {
     if (!PopBlock(Block::Transform, "TransformEnd", loc)) return;
-    state_->transform = state_->savedTransforms.back();
-    state_->savedTransforms.pop_back();
+    RestoreTransform();
 }
 
 // Shapes inside ObjectBegin/End are recorded relative to the transform current at ObjectBegin;
@@ -195,8 +207,10 @@ void SceneBuilder::ObjectBegin(const RtHandle& handle, const FileLoc& loc) {
     }
     PushBlock(Block::Object, loc);
     state_->savedAttributes.push_back(state_->attributes);
-    state_->savedTransforms.push_back(state_->transform);
+    SaveTransform();
     state_->transform = M44f();
+    state_->transformTimes.clear();
+    state_->transformSamples.clear();
     state_->openObject = std::make_shared<ObjectDefinition>();
     state_->openObject->base = std::make_shared<const Attributes>(state_->attributes);
     state_->openObjectHandle = handle.text;
@@ -208,8 +222,7 @@ void SceneBuilder::ObjectEnd(const FileLoc& loc) {
     state_->openObject.reset();
     MutableAttributes() = state_->savedAttributes.back();
     state_->savedAttributes.pop_back();
-    state_->transform = state_->savedTransforms.back();
-    state_->savedTransforms.pop_back();
+    RestoreTransform();
 }
 
 void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
@@ -228,7 +241,8 @@ void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
         return;
     }
     if (!RequireWorld("ObjectInstance", loc)) return;
-    ObjectInstanceUse use{it->second, state_->transform, {}};
+    ObjectInstanceUse use{
+        it->second, state_->transform, {}, state_->transformTimes, state_->transformSamples};
     const ObjectDefinition& definition = *it->second;
     for (size_t i = 0; i < definition.shapes.size(); ++i) {
         const auto& own = definition.shapes[i].attributes;
@@ -242,13 +256,19 @@ void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
     state_->frame.instances.push_back(std::move(use));
 }
 
-// Motion blocks: the first sample of each moving request is used (no motion blur yet).
-void SceneBuilder::MotionBegin(const std::vector<float>&, const FileLoc& loc) {
+// Motion blocks: transformations move (the transform is kept at each of the block's times);
+// a moving primitive (deformation) uses its first sample.
+void SceneBuilder::MotionBegin(const std::vector<float>& times, const FileLoc& loc) {
     PushBlock(Block::Motion, loc);
+    if (times.empty()) {
+        diagnostics_.Error(loc, "MotionBegin needs at least one time");
+        return;
+    }
     state_->motionRequestCount = 0;
-    diagnostics_.NoteOnce("MotionBegin", loc,
-                          "motion blur is not rendered: each MotionBegin block uses its first "
-                          "sample");
+    state_->motionTimes = times;
+    const bool sameTimes = state_->transformTimes == times;
+    state_->motionBase =
+        sameTimes ? state_->transformSamples : std::vector<M44f>(times.size(), state_->transform);
 }
 
 void SceneBuilder::MotionEnd(const FileLoc& loc) {

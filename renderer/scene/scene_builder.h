@@ -192,8 +192,13 @@ class SceneBuilder : public RiTarget {
     enum class Block { Frame, World, Attribute, Transform, Object, Motion, Solid };
 
     bool RequireWorld(const char* request, const FileLoc& loc);
-    // Inside MotionBegin/End only the first request is used: true for the ones to skip.
-    bool SkipMotionSample();
+    // Inside MotionBegin/End: the time sample the request gives (0, 1, ...); -1 outside.
+    int MotionSampleIndex();
+    // Sets (or, with `concatenate`, concatenates) the transform, at one time inside a
+    // motion block or at every time outside.
+    void ChangeTransform(const M44f& m, bool concatenate);
+    void SaveTransform();
+    void RestoreTransform();
     bool RequireOptions(const char* request, const FileLoc& loc);
     void PushBlock(Block block, const FileLoc& loc);
     bool PopBlock(Block block, const char* request, const FileLoc& loc);

@@ -26,6 +26,13 @@ struct SceneBuilder::State {
     // inside it (the camera transform is frozen at WorldBegin).
     M44f transform;
     std::vector<M44f> savedTransforms;
+    // Transformation motion blur: the transform at each time of the MotionBegin block that
+    // moved it (both empty while it is static), saved and restored with the transform.
+    std::vector<float> transformTimes;
+    std::vector<M44f> transformSamples;
+    std::vector<std::pair<std::vector<float>, std::vector<M44f>>> savedMotion;
+    std::vector<float> motionTimes;  // the open MotionBegin block's times
+    std::vector<M44f> motionBase;    // the transform at each of those times when it opened
     std::vector<Block> blocks;
     std::vector<FileLoc> blockLocs;
     bool inWorld = false;

@@ -94,7 +94,9 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
         worldFromCurrent_.multVecMatrix(P, org);
         worldFromCurrent_.multDirMatrix(L, dir);
         const float eps = 1e-4f * std::max(1.f, org.length() / std::max(dir.length(), 1e-20f));
-        if (!scene_.Occluded(org, dir, eps, 1 - 1e-4f)) continue;
+        // Shadows are traced at the shutter's opening: points of a batch have no common time.
+        const float time = shaders_.GetFrame().options.shutterOpen;
+        if (!scene_.Occluded(org, dir, eps, 1 - 1e-4f, time)) continue;
         for (int c = 0; c < colorComponents_; ++c) light->Cl[c * n_ + i] = 0;
     }
 }

@@ -321,16 +321,31 @@ TEST(SceneBuilderFrames, PerspectiveIsTreatedAsProjection) {
     EXPECT_FLOAT_EQ(r.frames[0].options.fov, 40);
 }
 
-TEST(SceneBuilderFrames, MotionBlocksUseTheFirstSample) {
+TEST(SceneBuilderFrames, MotionBlocksKeepTheTransformAtEachTime) {
     const BuildResult r = Build(
         "WorldBegin\nMotionBegin [0 1]\nTranslate 1 0 0\nTranslate 2 0 0\nMotionEnd\n"
-        "Sphere 1 -1 1 360\nWorldEnd\n");
-    EXPECT_EQ(r.messages,
-              "test.rib:2:1: note: motion blur is not rendered: each MotionBegin block uses its "
-              "first sample\n");
+        "Scale 2 2 2\nSphere 1 -1 1 360\nWorldEnd\n");
+    EXPECT_EQ(r.messages, "");
     ASSERT_EQ(r.frames.size(), 1u);
     ASSERT_EQ(r.frames[0].shapes.size(), 1u);
-    EXPECT_FLOAT_EQ(r.frames[0].shapes[0].worldFromObject[3][0], 1);
+    const SceneShape& shape = r.frames[0].shapes[0];
+    // The static transform is the first sample; the Scale after the block applies at every time.
+    EXPECT_FLOAT_EQ(shape.worldFromObject[3][0], 1);
+    ASSERT_EQ(shape.motionTimes, (std::vector<float>{0, 1}));
+    ASSERT_EQ(shape.worldFromObjectMotion.size(), 2u);
+    EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[0][3][0], 1);
+    EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[1][3][0], 2);
+    EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[1][0][0], 2);
+}
+
+TEST(SceneBuilderFrames, MovingPrimitivesUseTheirFirstSample) {
+    const BuildResult r = Build(
+        "WorldBegin\nMotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd\n"
+        "WorldEnd\n");
+    EXPECT_EQ(r.messages,
+              "test.rib:3:1: note: moving primitives (deformation blur) use their first sample\n");
+    ASSERT_EQ(r.frames.size(), 1u);
+    EXPECT_EQ(r.frames[0].shapes.size(), 1u);
 }
 
 }  // namespace
