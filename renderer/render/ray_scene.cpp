@@ -4,6 +4,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -171,6 +172,10 @@ struct RayScene::Impl {
                                           : 0.f;
     }
     float shutterOpen = 0, shutterClose = 0;
+    // A deforming mesh or cage: its vertex buffer at each of Embree's time steps, which divide
+    // the shutter interval. `floatsPerVertex` is 3, or 4 for subdivision (see MakeSubdivision).
+    void SetDeformationSteps(RTCGeometry g, const SceneShape& shape, const M44f& m,
+                             unsigned floatsPerVertex) const;
     void Attach(SceneLevel& level, RTCGeometry geometry, std::unique_ptr<GeometryRecord> record);
     RTCGeometry MakeMesh(const TriangleMesh& mesh, const M44f& m);
     RTCGeometry MakeQuadric(GeometryRecord& record, const QuadricShape& shape);
@@ -335,6 +340,33 @@ RTCGeometry RayScene::Impl::MakePoints(const PointSet& points, const M44f& m) {
     return g;
 }
 
+void RayScene::Impl::SetDeformationSteps(RTCGeometry g, const SceneShape& shape, const M44f& m,
+                                         unsigned floatsPerVertex) const {
+    const std::vector<float>& times = shape.deformTimes;
+    const std::vector<std::vector<V3f>>& samples = shape.deformPositions;
+    const unsigned steps = std::max<unsigned>(2, samples.size());
+    const size_t count = samples[0].size();
+    rtcSetGeometryTimeStepCount(g, steps);
+    for (unsigned step = 0; step < steps; ++step) {
+        const float time = shutterOpen + (shutterClose - shutterOpen) * step / (steps - 1);
+        size_t i1 = 0;
+        while (i1 + 1 < times.size() && times[i1] < time) ++i1;
+        const size_t i0 = i1 > 0 ? i1 - 1 : 0;
+        const float w = times[i1] > times[i0]
+                            ? std::clamp((time - times[i0]) / (times[i1] - times[i0]), 0.f, 1.f)
+                            : 1.f;
+        auto* v = static_cast<float*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3,
+                                    floatsPerVertex * sizeof(float), count));
+        for (size_t k = 0; k < count; ++k) {
+            const V3f p = TransformPoint(m, (1 - w) * samples[i0][k] + w * samples[i1][k]);
+            float* out = v + floatsPerVertex * k;
+            out[0] = p.x, out[1] = p.y, out[2] = p.z;
+            if (floatsPerVertex == 4) out[3] = 0;
+        }
+    }
+}
+
 void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
                               const M44f& spaceFromObject) {
     auto record = std::make_unique<GeometryRecord>();
@@ -348,6 +380,7 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
         record->meshVars = MeshPrimVars(*mesh);
         record->vars = &record->meshVars;
         g = MakeMesh(*mesh, m);
+        if (!shape.deformPositions.empty()) SetDeformationSteps(g, shape, m, 3);
     } else if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry)) {
         record->vars = &quadric->vars;
         g = MakeQuadric(*record, *quadric);
@@ -355,6 +388,7 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
         if (cage->faceVertexCounts.empty()) return;
         record->vars = &cage->vars;
         g = MakeSubdivision(*record, *cage, m);
+        if (!shape.deformPositions.empty()) SetDeformationSteps(g, shape, m, 4);
     } else if (const auto* curves = std::get_if<CurveSet>(&shape.geometry)) {
         if (curves->segmentFirst.empty()) return;
         record->vars = &curves->vars;

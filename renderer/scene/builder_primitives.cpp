@@ -21,11 +21,43 @@ bool SceneBuilder::StartPrimitive(const char* request, const FileLoc& loc) {
                                     " is a primitive and is only valid inside WorldBegin/WorldEnd");
         return false;
     }
-    const int sample = MotionSampleIndex();
-    if (sample == 0)
+    state_->primitiveSample = MotionSampleIndex();
+    return true;
+}
+
+namespace {
+
+// The positions a deforming primitive moves, for the kinds that can deform.
+const std::vector<V3f>* DeformablePositions(const ShapeGeometry& geometry) {
+    if (const auto* mesh = std::get_if<TriangleMesh>(&geometry)) return &mesh->positions;
+    if (const auto* cage = std::get_if<SubdivisionCage>(&geometry)) return &cage->positions;
+    return nullptr;
+}
+
+}  // namespace
+
+// Inside a motion block the second and later primitives are the first one at later times:
+// their positions become the first shape's deformation samples.
+void SceneBuilder::AddDeformationSample(const ShapeGeometry& geometry, const FileLoc& loc) {
+    std::vector<SceneShape>& shapes =
+        state_->openObject ? state_->openObject->shapes : state_->frame.shapes;
+    SceneShape* first = shapes.empty() ? nullptr : &shapes.back();
+    const std::vector<V3f>* moved = DeformablePositions(geometry);
+    const std::vector<V3f>* base = first ? DeformablePositions(first->geometry) : nullptr;
+    if (!moved || !base || moved->size() != base->size() ||
+        geometry.index() != first->geometry.index()) {
         diagnostics_.NoteOnce("deformation", loc,
-                              "moving primitives (deformation blur) use their first sample");
-    return sample <= 0;
+                              "only polygon, patch and subdivision meshes of unchanged topology "
+                              "deform in a motion block; this primitive uses its first sample");
+        return;
+    }
+    if (first->deformPositions.empty()) {
+        first->deformTimes = state_->motionTimes;
+        first->deformPositions.assign(state_->motionTimes.size(), *base);
+    }
+    // Until later samples arrive, every later time sees this one.
+    for (size_t i = state_->primitiveSample; i < first->deformPositions.size(); ++i)
+        first->deformPositions[i] = *moved;
 }
 
 bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
@@ -33,6 +65,10 @@ bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
 }
 
 void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
+    if (state_->primitiveSample > 0) {
+        AddDeformationSample(geometry, loc);
+        return;
+    }
     SceneShape shape;
     shape.geometry = std::move(geometry);
     if (!state_->snapshot)

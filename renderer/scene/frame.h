@@ -34,6 +34,10 @@ struct SceneShape {
     // Transformation motion blur: world from object at each of these times (empty: static).
     std::vector<float> motionTimes;
     std::vector<M44f> worldFromObjectMotion;
+    // Deformation motion blur (meshes and subdivision cages): the positions at each of these
+    // times (empty: the geometry does not deform).
+    std::vector<float> deformTimes;
+    std::vector<std::vector<V3f>> deformPositions;
     // Reverse the outward normal (Orientation "inside", or "lh"/"rh" against the handedness).
     bool flipNormals = false;
     FileLoc loc;

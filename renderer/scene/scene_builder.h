@@ -220,6 +220,7 @@ class SceneBuilder : public RiTarget {
     void AddQuadric(const char* request, std::unique_ptr<Quadric> quadric, const ParamList& params,
                     const FileLoc& loc);
     bool StartPrimitive(const char* request, const FileLoc& loc);
+    void AddDeformationSample(const ShapeGeometry& geometry, const FileLoc& loc);
 
     std::string sceneFile_;
     Diagnostics& diagnostics_;

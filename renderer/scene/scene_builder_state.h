@@ -32,6 +32,7 @@ struct SceneBuilder::State {
     std::vector<M44f> transformSamples;
     std::vector<std::pair<std::vector<float>, std::vector<M44f>>> savedMotion;
     std::vector<float> motionTimes;  // the open MotionBegin block's times
+    int primitiveSample = -1;        // the time sample of the primitive being added; -1: static
     std::vector<M44f> motionBase;    // the transform at each of those times when it opened
     std::vector<Block> blocks;
     std::vector<FileLoc> blockLocs;

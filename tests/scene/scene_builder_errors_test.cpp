@@ -338,14 +338,29 @@ TEST(SceneBuilderFrames, MotionBlocksKeepTheTransformAtEachTime) {
     EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[1][0][0], 2);
 }
 
-TEST(SceneBuilderFrames, MovingPrimitivesUseTheirFirstSample) {
+TEST(SceneBuilderFrames, MovingQuadricsUseTheirFirstSample) {
     const BuildResult r = Build(
         "WorldBegin\nMotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd\n"
         "WorldEnd\n");
     EXPECT_EQ(r.messages,
-              "test.rib:3:1: note: moving primitives (deformation blur) use their first sample\n");
+              "test.rib:4:1: note: only polygon, patch and subdivision meshes of unchanged "
+              "topology deform in a motion block; this primitive uses its first sample\n");
     ASSERT_EQ(r.frames.size(), 1u);
     EXPECT_EQ(r.frames[0].shapes.size(), 1u);
+}
+
+TEST(SceneBuilderFrames, MovingMeshesKeepTheirPositionsAtEachTime) {
+    const BuildResult r = Build(
+        "WorldBegin\nMotionBegin [0 1]\n"
+        "Polygon \"P\" [0 0 0 1 0 0 1 1 0]\nPolygon \"P\" [0 0 1 1 0 1 1 1 1]\n"
+        "MotionEnd\nWorldEnd\n");
+    EXPECT_EQ(r.messages, "");
+    ASSERT_EQ(r.frames.size(), 1u);
+    ASSERT_EQ(r.frames[0].shapes.size(), 1u);
+    const SceneShape& shape = r.frames[0].shapes[0];
+    ASSERT_EQ(shape.deformPositions.size(), 2u);
+    EXPECT_FLOAT_EQ(shape.deformPositions[0][2].z, 0);
+    EXPECT_FLOAT_EQ(shape.deformPositions[1][2].z, 1);
 }
 
 }  // namespace
