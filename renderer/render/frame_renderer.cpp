@@ -43,8 +43,12 @@ struct SampleState {
 class TileRenderer {
   public:
     TileRenderer(const RayScene& scene, const Camera& camera, ShadingWorker& shading,
-                 int colorComponents)
-        : scene_(scene), camera_(camera), shading_(shading), ncomps_(colorComponents) {}
+                 const Options& options)
+        : scene_(scene),
+          camera_(camera),
+          shading_(shading),
+          ncomps_(options.colorComponents),
+          colorToRgb_(options.colorToRgb) {}
 
     uint64_t Render(std::vector<SampleState>& samples);
 
@@ -56,12 +60,39 @@ class TileRenderer {
     void ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
                     const std::vector<SurfacePoint>& points, const std::vector<float>& hitT);
 
+    // Colours of ColorSamples components to RGB through nRGB (RISpec §4.1.3); opacity is the
+    // mean of its components on every channel, as a sum through nRGB is no opacity.
+    void ToRgb(const float* colour, float* rgb) const;
+    void OpacityToRgb(const float* opacity, float* rgb) const;
+
     const RayScene& scene_;
     const Camera& camera_;
     ShadingWorker& shading_;
     int ncomps_;
+    std::vector<float> colorToRgb_;
     uint64_t rays_ = 0;
 };
+
+void TileRenderer::ToRgb(const float* colour, float* rgb) const {
+    for (int c = 0; c < 3; ++c) {
+        if (colorToRgb_.empty()) {
+            rgb[c] = colour[std::min(c, ncomps_ - 1)];
+            continue;
+        }
+        rgb[c] = 0;
+        for (int i = 0; i < ncomps_; ++i) rgb[c] += colour[i] * colorToRgb_[3 * i + c];
+    }
+}
+
+void TileRenderer::OpacityToRgb(const float* opacity, float* rgb) const {
+    if (colorToRgb_.empty() && ncomps_ >= 3) {
+        for (int c = 0; c < 3; ++c) rgb[c] = opacity[c];
+        return;
+    }
+    float mean = 0;
+    for (int i = 0; i < ncomps_; ++i) mean += opacity[i] / ncomps_;
+    rgb[0] = rgb[1] = rgb[2] = mean;
+}
 
 bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
     const CameraRay& ray = sample.ray;
@@ -132,16 +163,17 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
         if (!attributes->matte) shading_.Shade(batch, Ci.data(), Oi.data());
         for (size_t j = 0; j < batchMembers.size(); ++j) {
             SampleState& sample = samples[hitSamples[batchMembers[j]]];
+            // A matte object hides what lies behind it and adds nothing itself (RISpec
+            // §4.2.5): its opacity is the surface's Os, not a shader's output.
+            const float* opacities =
+                attributes->matte ? points[batchMembers[j]].Os.data() : &Oi[j * ncomps_];
+            float rgb[3], opacityRgb[3];
+            ToRgb(&Ci[j * ncomps_], rgb);
+            OpacityToRgb(opacities, opacityRgb);
             float remaining = 0, covered = 0;
             for (int c = 0; c < 3; ++c) {
-                const int cc = std::min(c, ncomps_ - 1);
-                // A matte object hides what lies behind it and adds nothing itself (RISpec
-                // §4.2.5): its opacity is the surface's Os, not a shader's output.
-                const float opacity = std::clamp(
-                    attributes->matte ? points[batchMembers[j]].Os[cc] : Oi[j * ncomps_ + cc], 0.f,
-                    1.f);
-                if (!attributes->matte)
-                    sample.colour[c] += sample.transmittance[c] * Ci[j * ncomps_ + cc];
+                const float opacity = std::clamp(opacityRgb[c], 0.f, 1.f);
+                if (!attributes->matte) sample.colour[c] += sample.transmittance[c] * rgb[c];
                 covered += sample.transmittance[c] * opacity / 3;
                 sample.transmittance[c] *= 1 - opacity;
                 remaining = std::max(remaining, sample.transmittance[c]);
@@ -240,8 +272,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
             }
             auto& renderer = renderers.local();
             if (!renderer)
-                renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(),
-                                                          options.colorComponents);
+                renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options);
             raysTraced += renderer->Render(samples);
             for (const SampleState& sample : samples) {
                 const float values[kStandardChannelCount] = {sample.colour[0], sample.colour[1],

@@ -195,6 +195,7 @@ void SceneBuilder::ColorSamples(const std::vector<float>& nRGB, const std::vecto
     }
     const int n = static_cast<int>(nRGB.size() / 3);
     state_->options.colorComponents = n;
+    state_->options.colorToRgb = nRGB;
     MutableAttributes().color.assign(n, 1.f);
     MutableAttributes().opacity.assign(n, 1.f);
 }

@@ -44,6 +44,8 @@ struct Options {
     QuantizeSetting colorQuantize, depthQuantize{0, 0, 0, 0};
     std::vector<DisplayRequest> displays;
     int colorComponents = 3;  // ColorSamples
+    // ColorSamples' nRGB: n rows of 3, RGB = Σ colour[i]·row i. Empty: the colours are RGB.
+    std::vector<float> colorToRgb;
     std::string hider = "hidden";
     // ErrorHandler: "print" (RISpec's default: report and go on, skipping the bad request),
     // "ignore" (the same; messages are still printed), or "abort" (no frame is rendered once an

@@ -320,7 +320,7 @@ def object_instance_inherits_current_attributes(b, me):
            f"instance after Color [1 0 0] has colour {centre[:3]}")
 
 
-@check("batch", known_bug="ColorSamples colours are not converted to RGB through nRGB")
+@check("batch")
 def colour_samples_convert_to_rgb(b, me):
     """RISpec §4.1.3 ColorSamples: colours have n components, converted to RGB by nRGB (n rows
     of 3). Components 0.2 0.2 0.2 0.1 0.1 0.1 whose rows map 1,4 to red, 2,5 to green and 3,6 to
