@@ -172,6 +172,18 @@ struct RayScene::Impl {
                                           : 0.f;
     }
     float shutterOpen = 0, shutterClose = 0;
+    RTCRay MakeRay(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {
+        RTCRay ray;
+        ray.org_x = org.x, ray.org_y = org.y, ray.org_z = org.z;
+        ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
+        ray.tnear = tnear;
+        ray.tfar = tfar;
+        ray.time = EmbreeTime(time);
+        ray.mask = ~0u;
+        ray.id = 0;
+        ray.flags = 0;
+        return ray;
+    }
     // A deforming mesh or cage: its vertex buffer at each of Embree's time steps, which divide
     // the shutter interval. `floatsPerVertex` is 3, or 4 for subdivision (see MakeSubdivision).
     void SetDeformationSteps(RTCGeometry g, const SceneShape& shape, const M44f& m,
@@ -496,14 +508,7 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
-    rh.ray.org_x = org.x, rh.ray.org_y = org.y, rh.ray.org_z = org.z;
-    rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
-    rh.ray.tnear = tnear;
-    rh.ray.tfar = tfar;
-    rh.ray.time = impl_->EmbreeTime(time);
-    rh.ray.mask = ~0u;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
+    rh.ray = impl_->MakeRay(org, dir, tnear, tfar, time);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl_->top.scene, &context, &rh);
@@ -522,15 +527,7 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
 bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray;
-    ray.org_x = org.x, ray.org_y = org.y, ray.org_z = org.z;
-    ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
-    ray.tnear = tnear;
-    ray.tfar = tfar;
-    ray.time = impl_->EmbreeTime(time);
-    ray.mask = ~0u;
-    ray.id = 0;
-    ray.flags = 0;
+    RTCRay ray = impl_->MakeRay(org, dir, tnear, tfar, time);
     rtcOccluded1(impl_->top.scene, &context, &ray);
     return ray.tfar < 0;
 }
