@@ -16,7 +16,7 @@ namespace {
 using test::kDeg;
 using test::kPi;
 
-std::string TempPath(const std::string& name) { return ::testing::TempDir() + "brdf_grd_" + name; }
+using test::TempPath;
 
 std::string Slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

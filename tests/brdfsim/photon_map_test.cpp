@@ -10,11 +10,12 @@
 #include <string>
 
 #include "synth.h"
+#include "test_util.h"
 
 namespace gonio {
 namespace {
 
-std::string TempPath(const std::string& name) { return ::testing::TempDir() + "brdf_pm_" + name; }
+using test::TempPath;
 
 void WriteText(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;

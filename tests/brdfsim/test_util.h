@@ -2,9 +2,12 @@
 // Shared helpers of the brdfsim tests: synthetic maps and error statistics over a dense set of
 // (ω', ω) up to a largest zenith angle.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "analytic_brdf.h"
@@ -13,6 +16,14 @@
 #include "synth.h"
 
 namespace gonio::test {
+
+// A scratch file name of the running test: ctest runs tests in parallel processes, so two tests
+// must never share a file.
+inline std::string TempPath(const std::string& name) {
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    return ::testing::TempDir() + "brdf_" + test->test_suite_name() + "_" + test->name() + "_" +
+           name;
+}
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
