@@ -52,13 +52,18 @@ std::string SectionCut::Label() const {
     } angles[] = {{SectionAxis::kThetaIn, "θi", thetaIn},
                   {SectionAxis::kPhiIn, "φi", phiIn},
                   {SectionAxis::kThetaOut, "θo", thetaOut},
-                  {SectionAxis::kPhiOut, "φo", phiOut}};
+                  {SectionAxis::kPhiOut, relativePhi ? "φo-φi" : "φo", phiOut}};
     for (const auto& a : angles) {
         if (a.axis == vary) continue;
         std::snprintf(text, sizeof text, "%s%s=%g°", label.empty() ? "" : " ", a.name, a.value);
         label += text;
     }
     return label;
+}
+
+std::string SectionCut::AxisLabel() const {
+    const std::string name = SectionAxisName(vary);
+    return relativePhi && vary == SectionAxis::kPhiOut ? name + " - phi-in" : name;
 }
 
 void DefaultRange(SectionAxis axis, double* from, double* to) {
@@ -92,6 +97,7 @@ void CutAngles(const SectionCut& cut, double x, double* thetaIn, double* phiIn, 
             po = x;
             break;
     }
+    if (cut.relativePhi) po += pi;
     Fold(ti, pi, thetaIn, phiIn);
     Fold(to, po, thetaOut, phiOut);
 }

@@ -22,9 +22,12 @@ struct SectionCut {
     SectionAxis vary = SectionAxis::kThetaOut;
     double from = -89, to = 89;
     int samples = 100;
+    bool relativePhi = false;  // φ_out counts from φ_in (thesis figs. 5.16, 5.21: Δφ)
 
     // "θi=45 φi=0 φo=0" without the varying angle, for labels.
     std::string Label() const;
+    // The varying angle's name for an axis: "phi-out", or "phi-out - phi-in" when relative.
+    std::string AxisLabel() const;
 };
 
 // Default range of an axis: -89..89 for θ_out, 0..89 for θ_in, 0..360 for φ.
@@ -38,7 +41,8 @@ struct Section {
 // Samples evaluated on both cores.
 Section ComputeSection(const Brdf& brdf, const SectionCut& cut);
 
-// The four angles (radians) of sample x of the cut, with negative θ folded to φ + π.
+// The four angles (radians) of sample x of the cut, with negative θ folded to φ + π and, for a
+// relative cut, φ_in added to φ_out.
 void CutAngles(const SectionCut& cut, double x, double* thetaIn, double* phiIn, double* thetaOut,
                double* phiOut);
 

@@ -8,8 +8,8 @@
 #include "angular_map.h"
 #include "brdf_cli.h"
 #include "brdf_report.h"
+#include "plot.h"
 #include "section.h"
-#include "svg_plot.h"
 
 namespace gonio::brdfcli {
 
@@ -68,8 +68,11 @@ struct CutArgs {
     std::vector<double> thetaIn{45}, phiIn{0}, thetaOut{45}, phiOut{0};
     std::string vary = "theta-out";
     double from = NAN, to = NAN;
-    std::string plot;
-    std::vector<std::string> analytic;
+    bool relative = false;
+    std::string plot, title = "BRDF cross section";
+    std::vector<int> plotSize{800, 450};
+    double yMax = NAN;
+    std::vector<std::string> analytic, labels;
     int component = 0;
 };
 
@@ -83,7 +86,19 @@ void AddCutOptions(CLI::App* cmd, CutArgs* args) {
         ->capture_default_str();
     cmd->add_option("--from", args->from, "start of the varying angle, degrees");
     cmd->add_option("--to", args->to, "end of the varying angle, degrees");
-    cmd->add_option("--plot", args->plot, "write a labelled plot (.svg)");
+    cmd->add_flag("--relative", args->relative,
+                  "φ_out counts from φ_in (x is φ_out − φ_in when φ_out varies)");
+    cmd->add_option("--plot", args->plot,
+                    "write a labelled plot: .svg, or an image (.png, .tif, .jpg, ...)");
+    cmd->add_option("--title", args->title, "the plot's title")->capture_default_str();
+    cmd->add_option("--plot-size", args->plotSize, "the plot's WIDTH HEIGHT in pixels")
+        ->expected(2)
+        ->capture_default_str();
+    cmd->add_option("--y-max", args->yMax, "top of the plot's f axis (default: from the data)");
+    cmd->add_option("--label", args->labels,
+                    "legend text of the curves in order (grids × cuts, then analytic; repeatable)")
+        ->expected(1)
+        ->take_all();
     cmd->add_option("--analytic", args->analytic,
                     "overlay lambert:ALBEDO or phong:KD,KS,EXPONENT (repeatable)");
     cmd->add_option("--component", args->component, "colour component to plot")
@@ -93,6 +108,7 @@ void AddCutOptions(CLI::App* cmd, CutArgs* args) {
 std::vector<SectionCut> MakeCuts(const CutArgs& args, int samples) {
     SectionCut base;
     base.vary = ParseSectionAxis(args.vary);
+    base.relativePhi = args.relative;
     base.samples = samples;
     DefaultRange(base.vary, &base.from, &base.to);
     if (!std::isnan(args.from)) base.from = args.from;
@@ -113,10 +129,25 @@ std::vector<SectionCut> MakeCuts(const CutArgs& args, int samples) {
     return cuts;
 }
 
+// The plot's size and axis; checked before any section is computed.
+PlotOptions MakePlotOptions(const CutArgs& args) {
+    PlotOptions options;
+    options.width = args.plotSize[0];
+    options.height = args.plotSize[1];
+    if (!std::isnan(args.yMax)) options.yMax = args.yMax;
+    try {
+        const PlotLayout check(options, {});
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--plot: ") + e.what());
+    }
+    return options;
+}
+
 // Prints the table (x, then every component of every series) and writes the plot.
 void RunSections(const std::vector<std::pair<std::string, const Brdf*>>& sources,
                  const CutArgs& args, int samples) {
     const std::vector<SectionCut> cuts = MakeCuts(args, samples);
+    if (!args.plot.empty()) MakePlotOptions(args);
     std::vector<PlotSeries> series;
     std::vector<std::vector<std::vector<float>>> columns;
     std::string header = "# " + std::string(SectionAxisName(cuts[0].vary)) + "_deg";
@@ -163,6 +194,11 @@ void RunSections(const std::vector<std::pair<std::string, const Brdf*>>& sources
             header += "  [" + s.label + "]";
         }
     }
+    if (args.labels.size() > series.size()) {
+        throw UsageError(std::to_string(args.labels.size()) + " --label for " +
+                         std::to_string(series.size()) + " curves");
+    }
+    for (std::size_t i = 0; i < args.labels.size(); ++i) series[i].label = args.labels[i];
     std::printf("%s\n", header.c_str());
     for (int i = 0; i < samples; ++i) {
         std::printf("%9.3f", series[0].x[i]);
@@ -172,12 +208,11 @@ void RunSections(const std::vector<std::pair<std::string, const Brdf*>>& sources
         std::printf("\n");
     }
     if (!args.plot.empty()) {
-        if (!EndsWith(args.plot, ".svg")) throw UsageError("--plot writes .svg files");
         PlotLabels labels;
-        labels.title = "BRDF cross section";
-        labels.xLabel = std::string(SectionAxisName(cuts[0].vary)) + " (degrees)";
+        labels.title = args.title;
+        labels.xLabel = cuts[0].AxisLabel() + " (degrees)";
         labels.yLabel = "f (1/sr)";
-        WriteSvgPlot(args.plot, labels, series);
+        WritePlot(args.plot, labels, series, MakePlotOptions(args));
         std::fprintf(stderr, "wrote %s\n", args.plot.c_str());
     }
 }

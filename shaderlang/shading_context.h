@@ -6,12 +6,34 @@
 
 #include <Imath/ImathMatrix.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "rib/file_loc.h"
+#include "shaderlang/runtime/batch.h"
 #include "shaderlang/types.h"
 
 namespace gonio::sl {
+
+// Message passing (RISpec §15.8): the shader whose parameters surface(), displacement(),
+// atmosphere() and lightsource() read.
+enum class MessageSource : uint8_t { Surface, Displacement, Atmosphere, Light };
+
+// A parameter of another shader as message passing reads it: numbers (one element when the
+// parameter is uniform, else planes of PointCount() floats, batch.h layout) or a string.
+struct MessageValue {
+    TypeSpec type;
+    FloatArg floats;                    // data == nullptr for a string
+    const std::string* text = nullptr;  // a string parameter's value
+};
+
+// SplitMix64's finaliser (Steele, Lea and Flood 2014): a bijective mix with good avalanche.
+inline uint64_t MixBits(uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
 
 // One light as seen from a batch of surface points, after its light shader ran there.
 struct LightResult {
@@ -22,8 +44,36 @@ struct LightResult {
     std::vector<float> Ol;     // ncomps × n
     std::vector<uint8_t> lit;  // per point: 1 if the light's illuminate/solar reached it
     bool ambient = false;      // a light without illuminate or solar: only ambient() sees it
+    bool atInfinity = false;   // lit by solar(): L is a direction, the light infinitely far
     std::string category;      // the light's __category parameter
     int shaderIndex = -1;      // which light shader instance, for lightsource() queries
+
+    // The light shader's parameters as it left them, for lightsource(); the renderer fills
+    // them only for batches whose shaders call lightsource().
+    struct Parameter {
+        std::string name;
+        TypeSpec type;
+        bool varying = false;
+        int width = 0;              // floats per point
+        std::vector<float> floats;  // width floats (uniform) or width planes of n
+        std::string text;
+    };
+    std::vector<Parameter> parameters;
+
+    // The parameter `name` as a MessageValue over n points; false if the light has none.
+    bool FindParameter(const std::string& name, int n, MessageValue* value) const {
+        for (const Parameter& p : parameters) {
+            if (p.name != name) continue;
+            value->type = p.type;
+            value->text = p.type.base == BaseType::String ? &p.text : nullptr;
+            value->floats = FloatArg{};
+            if (!value->text)
+                value->floats =
+                    FloatArg{const_cast<float*>(p.floats.data()), p.width, p.varying, n};
+            return true;
+        }
+        return false;
+    }
 };
 
 class ShadingContext {
@@ -56,6 +106,10 @@ class ShadingContext {
     virtual bool Shadow(const std::string& name, const float* points /* 3 × n */,
                         const uint8_t* active, float* out /* n */) = 0;
 
+    // The file a texture-like name refers to (texture(), environment(), brdf()), looked up on
+    // the renderer's texture search path; the name itself where there is no such path.
+    virtual std::string FindTexture(const std::string& name) const { return name; }
+
     // trace(P, R): colour arriving at each P from direction R (ncomps × n), by a traced ray.
     virtual void Trace(const float* P, const float* R, const uint8_t* active, float* out) = 0;
 
@@ -68,22 +122,76 @@ class ShadingContext {
     virtual bool RendererInfo(const std::string& name, const TypeSpec& type,
                               std::vector<float>* floats, std::string* text) const = 0;
 
-    // Reports a run-time problem (division by zero, NaN, a missing texture) once per shader
-    // source line; `message` without location, the context adds the shader's file:line.
+    // surface(), displacement(), atmosphere(): the parameter `name` of the batch's shader of
+    // that kind as that shader left it at these points (or as it stands while it runs). The
+    // shaders run displacement, surface, atmosphere: a shader that has not run yet, or is
+    // absent, gives false.
+    virtual bool ShaderParameter(MessageSource, const std::string&, MessageValue*) const {
+        return false;
+    }
+
+    // textureinfo(): the fact `dataname` ("resolution", "channels", "type", "viewingmatrix",
+    // "projectionmatrix") of the texture file `name`; false if the file cannot be read or has
+    // no such fact.
+    virtual bool TextureInfo(const std::string&, const std::string&, std::vector<float>*,
+                             std::string*) {
+        return false;
+    }
+
+    // random(): the next 64 random bits of point i's own stream. The renderer seeds each
+    // point's stream from its pixel, sample and the render's seed (SeedRandom), so an image
+    // is the same whatever the thread count; unseeded points use their index.
+    uint64_t NextRandomBits(int point) {
+        if (randomState_.size() < size_t(n_)) SeedRandom(nullptr);
+        uint64_t& state = randomState_[size_t(point)];
+        state += 0x9e3779b97f4a7c15ull;  // SplitMix64's step
+        return MixBits(state);
+    }
+
+    // Reports a run-time problem (division by zero, NaN, a missing texture) once per `key` and
+    // shader statement; `message` without location: the context adds Statement().
     virtual void RuntimeWarning(const std::string& key, const std::string& message) = 0;
+
+    // The shader statement being run ("file.sl:12"), set by the interpreter before each
+    // built-in call and warning, so that run-time warnings name the shader's line; empty
+    // outside shader code.
+    void SetStatement(const std::string* where) { statement_ = where; }
+    const std::string& Statement() const {
+        static const std::string kNone;
+        return statement_ ? *statement_ : kNone;
+    }
 
     // printf output.
     virtual void Print(const std::string& text) = 0;
 
     // Derivatives are differences over neighbouring points of the batch: for point i, the index
-    // of the point one step along u (along v), or -1 when there is none (then the kernel uses
-    // the opposite neighbour, or 0). The globals du and dv hold the steps.
+    // of a neighbouring point in each of two independent directions, or -1 when there is none
+    // (then the kernels use the point whose neighbour it is, or 0).
     virtual const int* UNeighbours() const = 0;
     virtual const int* VNeighbours() const = 0;
+    // How far the neighbours lie in (u, v): 4 planes of n floats, the change of (u, v) from
+    // point i to UNeighbours()[i] (planes 0, 1) and to VNeighbours()[i] (planes 2, 3); Du and Dv
+    // then solve for the parametric derivatives. nullptr: the neighbours are one step along u
+    // and one along v, as on a grid, and the globals du and dv hold the steps. A ray tracer's
+    // neighbours lie a pixel away along x and y, in any direction of (u, v).
+    virtual const float* NeighbourSteps() const { return nullptr; }
 
   protected:
+    // One seed per point (PointCount() of them), or nullptr: each point's index.
+    void SeedRandom(const uint64_t* seeds) {
+        randomState_.resize(size_t(n_));
+        for (int i = 0; i < n_; ++i) randomState_[i] = MixBits(seeds ? seeds[i] : uint64_t(i) + 1);
+    }
     int n_ = 0;
     int colorComponents_ = 3;
+    std::vector<uint64_t> randomState_;
+
+  private:
+    const std::string* statement_ = nullptr;
 };
+
+// The location a statement string ("file.sl:12") names, for diagnostics; `fallbackFile` when
+// there is no statement.
+FileLoc StatementLoc(const std::string& statement, const std::string& fallbackFile);
 
 }  // namespace gonio::sl

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
-#include <sstream>
 
+#include "rib/search_path.h"
 #include "shaderlang/compiler/codegen.h"
 #include "shaderlang/compiler/optimizer.h"
 #include "shaderlang/compiler/parser.h"
@@ -101,18 +101,13 @@ ShadingSystem::ShadingSystem(Diagnostics& diagnostics, int colorComponents)
     : diagnostics_(diagnostics), colorComponents_(colorComponents) {}
 
 void ShadingSystem::SetSearchPath(const std::string& path) {
-    std::vector<std::string> out;
-    std::stringstream list(path);
-    std::string item;
-    while (std::getline(list, item, ':')) {
-        if (item == "&") {
-            out.insert(out.end(), searchPath_.begin(), searchPath_.end());
-        } else if (!item.empty()) {
-            out.push_back(item);
-        }
-    }
     std::lock_guard<std::mutex> lock(mutex_);
-    searchPath_ = out;
+    searchPath_ = ExpandSearchPath(path, searchPath_, {});
+}
+
+void ShadingSystem::SetSearchPath(std::vector<std::string> folders) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    searchPath_ = std::move(folders);
 }
 
 std::shared_ptr<const Shader> ShadingSystem::Load(const std::string& name, const FileLoc& where) {
@@ -540,6 +535,7 @@ bool ShaderExecutor::RunLight(ShaderInstance& instance, const ShaderGlobals& glo
     result->Cl = planes("Cl", ncomps, 1.0f, 0.0f);
     result->Ol = planes("Ol", ncomps, 1.0f, 0.0f);
     result->ambient = instance.Master().IsAmbientLight();
+    result->atInfinity = x.solar;
     result->lit = result->ambient ? std::vector<uint8_t>(size_t(n), 1) : x.lit;
     result->category = instance.StringParameter("__category");
     return true;

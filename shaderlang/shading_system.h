@@ -103,6 +103,7 @@ class ShadingSystem {
     // Colon-separated folders; '&' stands for the previous path (initially "."). Also used as
     // the #include path of the shaders.
     void SetSearchPath(const std::string& path);
+    void SetSearchPath(std::vector<std::string> folders);
     const std::vector<std::string>& SearchPath() const { return searchPath_; }
 
     // `name` is a shader name ("plastic") or a file name ("plastic.sl", "dir/x.sl"). Errors

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "shaderlang/message_passing.h"
+
 namespace gonio::sl {
 
 void SimpleShadingContext::BeginBatch(const ShaderGlobals& globals, int colorComponents) {
@@ -12,6 +14,7 @@ void SimpleShadingContext::BeginBatch(const ShaderGlobals& globals, int colorCom
     lightsValid_ = false;
     uNeighbours_.assign(size_t(n_), -1);
     vNeighbours_.assign(size_t(n_), -1);
+    SeedRandom(nullptr);
 }
 
 bool SimpleShadingContext::CurrentFromSpace(const std::string& space, int, Imath::M44f* m) const {
@@ -35,6 +38,7 @@ const std::vector<LightResult>& SimpleShadingContext::Lights() {
         LightResult result;
         lightExecutor_.RunLight(*lights_[i], g, *this, &result);
         result.shaderIndex = int(i);
+        CaptureLightParameters(*lights_[i], lightExecutor_, n_, &result);
         lightResults_.push_back(std::move(result));
     }
     lightsValid_ = true;
@@ -86,17 +90,9 @@ bool SimpleShadingContext::RendererInfo(const std::string& name, const TypeSpec&
 }
 
 void SimpleShadingContext::RuntimeWarning(const std::string& key, const std::string& message) {
-    // `key` is "file.sl:LINE" for shader code; report as a compiler would, once.
-    size_t colon = key.rfind(':');
-    FileLoc loc;
-    if (colon != std::string::npos && colon + 1 < key.size() &&
-        std::isdigit(static_cast<unsigned char>(key[colon + 1]))) {
-        loc.file = std::make_shared<const std::string>(key.substr(0, colon));
-        loc.line = std::atoi(key.c_str() + colon + 1);
-    } else {
-        loc.file = std::make_shared<const std::string>("gonio shade");
-    }
-    diagnostics_.WarningOnce(key + message, loc, message);
+    // Reported as a compiler would, at the shader statement, once per key and statement.
+    const std::string& where = Statement();
+    diagnostics_.WarningOnce(where + key + message, StatementLoc(where, "gonio shade"), message);
 }
 
 void SimpleShadingContext::Print(const std::string& text) { std::fputs(text.c_str(), printSink_); }

@@ -1,7 +1,9 @@
 #pragma once
 // A ShadingContext for shading without a scene (`gonio shade`, tests): every coordinate system
 // is the identity, textures are missing (black, with a warning), attributes and options are
-// absent, and lights are light-shader instances evaluated at the batch's P on demand.
+// absent, and lights are light-shader instances evaluated at the batch's P on demand (with
+// their parameters kept for lightsource()). random() draws from streams seeded by the point's
+// index in the grid.
 
 #include <cstdio>
 #include <memory>

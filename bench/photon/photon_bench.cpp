@@ -8,8 +8,11 @@
 //
 // Raw Embree sees grass as the same triangles and each brushed-metal cylinder as an Embree round
 // linear curve of the same radius and axis (its native cylinder, with round instead of flat
-// ends); the tracer intersects our exact quadric cylinders and disks. Rates are per second of
-// process CPU time (per core), which stays meaningful on a loaded machine.
+// ends); the tracer intersects our exact quadric cylinders and disks. The raw scenes are built
+// twice: with Embree's default flags (the reference) and with RTC_SCENE_FLAG_ROBUST,
+// which RayScene uses (watertight triangles, conservative traversal), so that our own overhead
+// can be told from the price of robustness. Rates are per second of process CPU time (per
+// core), which stays meaningful on a loaded machine.
 
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
@@ -68,7 +71,8 @@ struct RawEmbree {
     RTCDevice device = rtcNewDevice(nullptr);
     RTCScene scene = rtcNewScene(device);
 
-    explicit RawEmbree(const Frame& frame) {
+    RawEmbree(const Frame& frame, bool robust) {
+        if (robust) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
         std::vector<float> curve;  // x y z r per control point, two per cylinder
         for (const SceneShape& shape : frame.shapes) {
             if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
@@ -162,13 +166,14 @@ struct Fixture {
     Frame frame;
     Diagnostics diagnostics{nullptr};
     std::unique_ptr<RayScene> ours;
-    std::unique_ptr<RawEmbree> raw;
+    std::unique_ptr<RawEmbree> raw, rawRobust;
     MicroBrdfTable brdfs;
     std::vector<BeamRay> beams = MakeBeams();
 
     explicit Fixture(const std::string& rib) : frame(LoadFrame(rib)) {
         ours = std::make_unique<RayScene>(frame, diagnostics);
-        raw = std::make_unique<RawEmbree>(frame);
+        raw = std::make_unique<RawEmbree>(frame, false);
+        rawRobust = std::make_unique<RawEmbree>(frame, true);
         brdfs = BuildMicroBrdfTable(frame, diagnostics);
     }
 };
@@ -199,8 +204,13 @@ void TraceBeams(benchmark::State& state, const Trace& trace) {
     state.counters["hit%"] = 100.0 * hits / kRays;
 }
 
+const RawEmbree& Raw(const Fixture& f, const benchmark::State& state) {
+    return state.range(2) ? *f.rawRobust : *f.raw;
+}
+
 void BM_RawEmbreeBeams(benchmark::State& state) {
-    TraceBeams(state, [](const Fixture& f, const BeamRay& r) { return f.raw->Intersect(r); });
+    TraceBeams(state,
+               [&](const Fixture& f, const BeamRay& r) { return Raw(f, state).Intersect(r); });
 }
 
 void BM_RaySceneBeams(benchmark::State& state) {
@@ -219,7 +229,8 @@ void BM_RawEmbreePhotons(benchmark::State& state) {
         std::atomic<int64_t> count{0};
         tbb::parallel_for(tbb::blocked_range<int>(0, kRays, 4096), [&](const auto& r) {
             int64_t local = 0;
-            for (int i = r.begin(); i != r.end(); ++i) local += f.raw->TracePath(f.beams[i], i);
+            const RawEmbree& raw = Raw(f, state);
+            for (int i = r.begin(); i != r.end(); ++i) local += raw.TracePath(f.beams[i], i);
             count += local;
         });
         bounces = count;
@@ -257,9 +268,19 @@ void Args(benchmark::internal::Benchmark* b) {
     b->ArgNames({"scene", "threads"})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 }
 
-BENCHMARK(BM_RawEmbreeBeams)->Apply(Args);
+// Args for raw Embree: scene, threads, robust (0 default flags, 1 RTC_SCENE_FLAG_ROBUST).
+void RawArgs(benchmark::internal::Benchmark* b) {
+    for (int scene : {0, 1})
+        for (int threads : {1, 2})
+            for (int robust : {0, 1}) b->Args({scene, threads, robust});
+    b->ArgNames({"scene", "threads", "robust"})
+        ->Unit(benchmark::kMillisecond)
+        ->MeasureProcessCPUTime();
+}
+
+BENCHMARK(BM_RawEmbreeBeams)->Apply(RawArgs);
 BENCHMARK(BM_RaySceneBeams)->Apply(Args);
-BENCHMARK(BM_RawEmbreePhotons)->Apply(Args);
+BENCHMARK(BM_RawEmbreePhotons)->Apply(RawArgs);
 BENCHMARK(BM_PhotonTracer)->Apply(Args);
 
 }  // namespace

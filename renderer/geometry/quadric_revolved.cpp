@@ -2,25 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/quadric_roots.h"
 
 namespace gonio::quadric {
-
-int RevolutionQuadric::RayRoots(const V3d& o, const V3d& d, double lo, double hi,
-                                double t[2]) const {
-    // Substitute o + t·d into the implicit equation: c2·t² + c1·t + c0 = 0.
-    const double w0 = o.z - z0;
-    const double c2 = lambda * (d.x * d.x + d.y * d.y) - alpha * d.z * d.z;
-    const double c1 = 2 * lambda * (o.x * d.x + o.y * d.y) - 2 * alpha * w0 * d.z - beta * d.z;
-    const double c0 = lambda * (o.x * o.x + o.y * o.y) - (alpha * w0 + beta) * w0 - gamma;
-    double all[2];
-    const int n = SolveQuadratic(c2, c1, c0, all);
-    int kept = 0;
-    for (int i = 0; i < n; ++i)
-        if (all[i] > lo && all[i] < hi) t[kept++] = all[i];
-    return kept;
-}
 
 namespace {
 
@@ -72,9 +58,26 @@ void RevolvedQuadric::SetExtent(const std::vector<V2d>& extremes, double zlo, do
     bounds_ = Box3f(box.min - pad, box.max + pad);
     center_ = V3d(0.5 * (double(box.min.x) + box.max.x), 0.5 * (double(box.min.y) + box.max.y),
                   0.5 * (double(box.min.z) + box.max.z));
+    const V3d halfDiagonal =
+        0.5 * V3d(double(bounds_.max.x) - bounds_.min.x, double(bounds_.max.y) - bounds_.min.y,
+                  double(bounds_.max.z) - bounds_.min.z);
+    ballCentre_ = center_;
+    ballRadius2_ = halfDiagonal.length2();
+    double rhoMax = 0;
+    for (const V2d& q : extremes) rhoMax = std::max(rhoMax, std::hypot(q.x, q.y));
+    rhoMax += std::max(rhoMax * 1e-6, double(pad.x));
+    rhoMax2_ = rhoMax * rhoMax;
 }
 
-bool RevolvedQuadric::ThetaParameter(const V3d& p, double profileAngle, double* u) const {
+void RevolvedQuadric::SetBoundingBall(const V3d& centre, double radius) {
+    ballCentre_ = centre;
+    // Padded like the box: the test must never reject a hit that rounding put on the edge.
+    radius = std::fabs(radius) * (1 + 1e-6);
+    ballRadius2_ = radius * radius;
+}
+
+bool RevolvedQuadric::ThetaParameter(const V3d& p, double profileAngle, double slack,
+                                     double* u) const {
     const double psi = std::atan2(p.y, p.x);
     // How far the sweep has turned to carry the profile point onto p, in the sweep's sense.
     double theta = thetaMax_ >= 0 ? psi - profileAngle : profileAngle - psi;
@@ -82,13 +85,28 @@ bool RevolvedQuadric::ThetaParameter(const V3d& p, double profileAngle, double* 
     // A point a rounding error short of a full turn lies on the sweep's starting edge.
     if (theta >= 2 * kPi - 1e-12) theta = 0;
     const double sweep = std::fabs(thetaMax_);
-    if (!fullSweep_ && theta > sweep) return false;
+    if (!fullSweep_ && theta > sweep) {
+        // Past the end edge, or short of the start edge: onto the nearer, within the slack.
+        const bool nearEnd = theta - sweep <= 2 * kPi - theta;
+        if (std::min(theta - sweep, 2 * kPi - theta) > slack) return false;
+        theta = nearEnd ? sweep : 0;
+    }
     *u = std::min(theta / sweep, 1.0);
     return true;
 }
 
-bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, float tmax,
-                                QuadricHit* hit) const {
+bool RevolvedQuadric::OnShape(const V3d& p) const {
+    if (everyRootOnShape_) return true;
+    ProfileCandidate candidates[2];
+    const int m = ProfileCandidates(p, 0, candidates);
+    double u;
+    for (int j = 0; j < m; ++j)
+        if (fullSweep_ || ThetaParameter(p, candidates[j].angle, 0, &u)) return true;
+    return false;
+}
+
+bool RevolvedQuadric::IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax,
+                                     float* tHit, V3f* point) const {
     if (degenerate_) return false;
     const V3d d(dir.x, dir.y, dir.z);
     const double dd = d.dot(d);
@@ -97,6 +115,15 @@ bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, floa
     // then scale with the shape's size, not with the distance of the ray origin, and do not
     // cancel (a ray from 1e3 units away hits a unit sphere as accurately as one from nearby).
     const V3d o(org.x, org.y, org.z);
+    // |w × d|² / |d|² is the squared distance of the ray's line from the ball's centre
+    // (Lagrange's identity: no cancellation for rays from far away).
+    const V3d w = o - ballCentre_;
+    if (w.cross(d).length2() > ballRadius2_ * dd) return false;
+    // Likewise the infinite cylinder ρ ≤ ρmax about the axis of revolution, which holds a long
+    // cylinder far more tightly than any ball: seen along z, the line passes the axis at the
+    // distance |o.x·d.y − o.y·d.x| / |d.xy|.
+    const double across = o.x * d.y - o.y * d.x;
+    if (across * across > rhoMax2_ * (d.x * d.x + d.y * d.y)) return false;
     const double t0 = (center_ - o).dot(d) / dd;
     const V3d origin = o + t0 * d;
     double roots[4];
@@ -105,18 +132,43 @@ bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, floa
         const double t = t0 + roots[i];
         if (!(t > tmin && t < tmax)) continue;
         const V3d p = origin + roots[i] * d;
-        ProfileCandidate candidates[2];
-        const int m = ProfileCandidates(p, candidates);
-        for (int j = 0; j < m; ++j) {
-            double u;
-            if (!ThetaParameter(p, candidates[j].angle, &u)) continue;
-            hit->t = float(t);
-            hit->u = float(u);
-            hit->v = float(candidates[j].v);
-            return true;
-        }
+        if (!OnShape(p)) continue;
+        *tHit = float(t);
+        *point = V3f(p);
+        return true;
     }
     return false;
+}
+
+V2f RevolvedQuadric::ParametersAt(const V3f& point) const {
+    const V3d p(point.x, point.y, point.z);
+    // First exactly as IntersectPoint decided, then allowing for the rounding of the point to
+    // float, and at last (a point off the surface) the nearest parameters of any candidate.
+    for (double slack : {0.0, 1e-4, std::numeric_limits<double>::infinity()}) {
+        ProfileCandidate candidates[2];
+        const int m = ProfileCandidates(p, slack, candidates);
+        for (int j = 0; j < m; ++j) {
+            double u;
+            if (ThetaParameter(p, candidates[j].angle, slack, &u))
+                return V2f(float(u), float(candidates[j].v));
+        }
+    }
+    return V2f(0, 0);
+}
+
+V3f RevolvedQuadric::NormalAt(const V3f& point) const {
+    const V3d n = ImplicitGradient(V3d(point.x, point.y, point.z));
+    return V3f(float(n.x), float(n.y), float(n.z));
+}
+
+bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, float tmax,
+                                QuadricHit* hit) const {
+    V3f point;
+    if (!IntersectPoint(org, dir, tmin, tmax, &hit->t, &point)) return false;
+    const V2f uv = ParametersAt(point);
+    hit->u = uv.x;
+    hit->v = uv.y;
+    return true;
 }
 
 SurfaceGeometry RevolvedQuadric::Evaluate(float u, float v) const {

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "geometry/quadric_roots.h"
 #include "geometry/shape.h"
 
 namespace gonio::quadric {
@@ -39,13 +40,41 @@ struct ProfileCandidate {
     double v = 0, angle = 0;
 };
 
+// Whether x lies in [0, 1] give or take `slack`; if so, clamps it into [0, 1]. A point rounded
+// to float lies slightly off its surface, so that its parameters may fall just outside the
+// square: ParametersAt accepts them with a slack (NaN never passes).
+inline bool ClampToUnit(double* x, double slack) {
+    if (!(*x >= -slack && *x <= 1 + slack)) return false;
+    *x = *x < 0 ? 0 : *x > 1 ? 1 : *x;
+    return true;
+}
+
 // The implicit surface λ·(x² + y²) = α·w² + β·w + γ with w = z − z0: the form shared by the
 // sphere, the paraboloid and the swept lines (cylinder, cone, disk, hyperboloid).
 struct RevolutionQuadric {
     double lambda = 1, alpha = 0, beta = 0, gamma = 0, z0 = 0;
 
-    // The ray parameters in (lo, hi) where o + t·d meets the surface, ascending.
-    int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[2]) const;
+    // The gradient of λ·(x² + y²) − (α·w² + β·w + γ) at p: a normal of the surface there.
+    V3d Gradient(const V3d& p) const {
+        const double w = p.z - z0;
+        return V3d(2 * lambda * p.x, 2 * lambda * p.y, -(2 * alpha * w + beta));
+    }
+
+    // The ray parameters in (lo, hi) where o + t·d meets the surface, ascending. Inline, with
+    // SolveQuadratic: it is most of the work of every sphere, cylinder or cone test.
+    int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[2]) const {
+        // Substitute o + t·d into the implicit equation: c2·t² + c1·t + c0 = 0.
+        const double w0 = o.z - z0;
+        const double c2 = lambda * (d.x * d.x + d.y * d.y) - alpha * d.z * d.z;
+        const double c1 = 2 * lambda * (o.x * d.x + o.y * d.y) - 2 * alpha * w0 * d.z - beta * d.z;
+        const double c0 = lambda * (o.x * o.x + o.y * o.y) - (alpha * w0 + beta) * w0 - gamma;
+        double all[2];
+        const int n = SolveQuadratic(c2, c1, c0, all);
+        int kept = 0;
+        for (int i = 0; i < n; ++i)
+            if (all[i] > lo && all[i] < hi) t[kept++] = all[i];
+        return kept;
+    }
 };
 
 class RevolvedQuadric : public Quadric {
@@ -53,6 +82,10 @@ class RevolvedQuadric : public Quadric {
     Box3f Bounds() const final { return bounds_; }
     bool Intersect(const V3f& org, const V3f& dir, float tmin, float tmax,
                    QuadricHit* hit) const final;
+    bool IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax, float* t,
+                        V3f* point) const final;
+    V2f ParametersAt(const V3f& point) const final;
+    V3f NormalAt(const V3f& point) const final;
     SurfaceGeometry Evaluate(float u, float v) const final;
 
   protected:
@@ -62,24 +95,42 @@ class RevolvedQuadric : public Quadric {
     // Where the ray o + t·d (o already moved near the shape) meets the whole unclipped surface,
     // for t in (lo, hi), ascending; at most 4.
     virtual int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const = 0;
-    // The profile points with v in [0, 1] whose sweep passes through the surface point p (at
-    // most 2: a profile may meet one circle twice).
-    virtual int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const = 0;
+    // The profile points with v in [0, 1] (give or take `slack`, then clamped: ClampToUnit)
+    // whose sweep passes through the surface point p (at most 2: a profile may meet one circle
+    // twice).
+    virtual int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const = 0;
+    // The gradient of the implicit equation that RayRoots solves, at a point of the surface
+    // (zero where it has none, as at a cone's apex).
+    virtual V3d ImplicitGradient(const V3d& p) const = 0;
 
     // Derived constructors end with one of these. The surface lies inside the sweep of the
     // profile points `extremes` (x, y before the sweep), for z in [zlo, zhi].
     void SetExtent(const std::vector<V2d>& extremes, double zlo, double zhi);
     void SetDegenerate();  // a surface of zero area: never hit
+    // A ball known to hold the surface, tighter than the box's (SetExtent's default): rays that
+    // pass it are rejected with a cross product, before any division.
+    void SetBoundingBall(const V3d& centre, double radius);
+    // Every point of the implicit surface that RayRoots solves lies on the profile's sweep (a
+    // full sphere, a full torus tube): with a full sweep, a root is a hit without computing
+    // its (u, v).
+    void SetProfileComplete() { everyRootOnShape_ = fullSweep_; }
 
     double thetaMax_;  // radians, signed
     bool degenerate_ = false;
 
   private:
-    bool ThetaParameter(const V3d& p, double profileAngle, double* u) const;
+    bool OnShape(const V3d& p) const;
+    // u for the surface point p swept from a profile point at polar angle profileAngle, if it
+    // lies within the sweep (give or take `slack` radians, then moved onto the nearer edge).
+    bool ThetaParameter(const V3d& p, double profileAngle, double slack, double* u) const;
 
     bool fullSweep_;
+    bool everyRootOnShape_ = false;
     V3d center_{0, 0, 0};
     Box3f bounds_;
+    V3d ballCentre_{0, 0, 0};
+    double ballRadius2_ = 0;
+    double rhoMax2_ = 0;  // the largest distance of the surface from the z axis, squared
 };
 
 }  // namespace gonio::quadric

@@ -5,27 +5,6 @@
 
 namespace gonio::quadric {
 
-int SolveQuadratic(double c2, double c1, double c0, double roots[2]) {
-    if (c2 == 0) {
-        if (c1 == 0) return 0;
-        roots[0] = -c0 / c1;
-        return std::isfinite(roots[0]) ? 1 : 0;
-    }
-    const double disc = c1 * c1 - 4 * c2 * c0;
-    if (disc < 0) return 0;
-    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-    if (q == 0) {  // c1 = 0 and c0 = 0: a double root at zero
-        roots[0] = 0;
-        return 1;
-    }
-    double r0 = q / c2, r1 = c0 / q;
-    if (r0 > r1) std::swap(r0, r1);
-    int n = 0;
-    if (std::isfinite(r0)) roots[n++] = r0;
-    if (std::isfinite(r1)) roots[n++] = r1;
-    return n;
-}
-
 double EvaluatePolynomial(const double* c, int degree, double t) {
     double p = c[degree];
     for (int i = degree - 1; i >= 0; --i) p = p * t + c[i];

@@ -49,6 +49,7 @@ class Torus final : public RevolvedQuadric {
           phiMax_(Radians(phimax)),
           fullTube_(std::fabs(phimax - phimin) >= 360) {
         if (minorRadius == 0 || phimin == phimax) SetDegenerate();
+        if (fullTube_) SetProfileComplete();
         V2d cosRange, sinRange;
         CosSinRange(std::min(phiMin_, phiMax_), std::max(phiMin_, phiMax_), &cosRange, &sinRange);
         // For a fixed θ a point's coordinates are linear in the profile's x, so the profile's
@@ -56,6 +57,7 @@ class Torus final : public RevolvedQuadric {
         const double x0 = major_ + minor_ * cosRange.x, x1 = major_ + minor_ * cosRange.y;
         const double z0 = minor_ * sinRange.x, z1 = minor_ * sinRange.y;
         SetExtent({V2d(x0, 0), V2d(x1, 0)}, std::min(z0, z1), std::max(z0, z1));
+        SetBoundingBall(V3d(0, 0, 0), std::fabs(major_) + std::fabs(minor_));
     }
 
   protected:
@@ -105,7 +107,7 @@ class Torus final : public RevolvedQuadric {
         return n;
     }
 
-    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
+    int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
         // The point lies on the tube circle centred at signed distance +R from the axis in its
         // own half plane (θ = ψ), or, for a spindle torus, at −R (θ = ψ + π). Try the nearer.
         const double rho = std::sqrt(p.x * p.x + p.y * p.y);
@@ -119,20 +121,35 @@ class Torus final : public RevolvedQuadric {
         for (int i : {first, 1 - first}) {
             if (miss[i] > tolerance) continue;
             const double phi = std::atan2(p.z / minor_, (offAxis[i] - major_) / minor_);
-            if (TubeParameter(phi, &c[n].v)) c[n++].angle = offAxis[i] < 0 ? kPi : 0;
+            if (TubeParameter(phi, slack, &c[n].v)) c[n++].angle = offAxis[i] < 0 ? kPi : 0;
         }
         return n;
     }
 
+    V3d ImplicitGradient(const V3d& p) const override {
+        // A sphere swept twice (see RayRoots): the quartic's gradient vanishes on it.
+        if (major_ == 0) return p;
+        // ∇[(|P|² + R² − r²)² − 4R²·(x² + y²)]
+        const double g = 4 * (p.length2() + major_ * major_ - minor_ * minor_);
+        const double radial = 8 * major_ * major_;
+        return V3d(g * p.x - radial * p.x, g * p.y - radial * p.y, g * p.z);
+    }
+
   private:
-    // v for the tube angle phi (any turn), if phi lies in the swept φ range.
-    bool TubeParameter(double phi, double* v) const {
+    // v for the tube angle phi (any turn), if phi lies in the swept φ range (give or take
+    // `slack` radians, then moved onto the nearer end).
+    bool TubeParameter(double phi, double slack, double* v) const {
         const double dphi = phiMax_ - phiMin_;
         double turned = std::fmod(dphi >= 0 ? phi - phiMin_ : phiMin_ - phi, 2 * kPi);
         if (turned < 0) turned += 2 * kPi;
         if (turned >= 2 * kPi - 1e-12) turned = 0;  // on the starting edge
-        if (!fullTube_ && turned > std::fabs(dphi)) return false;
-        *v = std::min(turned / std::fabs(dphi), 1.0);
+        const double range = std::fabs(dphi);
+        if (!fullTube_ && turned > range) {
+            const bool nearEnd = turned - range <= 2 * kPi - turned;
+            if (std::min(turned - range, 2 * kPi - turned) > slack) return false;
+            turned = nearEnd ? range : 0;
+        }
+        *v = std::min(turned / range, 1.0);
         return true;
     }
 

@@ -28,6 +28,8 @@ class Sphere final : public RevolvedQuadric {
             phiMax_ = std::asin(std::clamp(zmax / radius, -1.0, 1.0));
         }
         if (radius == 0 || phiMin_ == phiMax_) SetDegenerate();
+        // atan2 below never leaves [−90°, 90°]: a full φ range takes every point of the sphere.
+        if (std::fabs(phiMax_ - phiMin_) == kPi) SetProfileComplete();
         implicit_ = {1, -1, 0, radius * radius, 0};  // x² + y² + z² = r²
 
         const double lo = std::min(phiMin_, phiMax_), hi = std::max(phiMin_, phiMax_);
@@ -36,6 +38,7 @@ class Sphere final : public RevolvedQuadric {
         const double z0 = radius * std::sin(lo), z1 = radius * std::sin(hi);
         SetExtent({V2d(radius * cosMin, 0), V2d(radius * cosMax, 0)}, std::min(z0, z1),
                   std::max(z0, z1));
+        SetBoundingBall(V3d(0, 0, 0), radius);
     }
 
   protected:
@@ -51,12 +54,14 @@ class Sphere final : public RevolvedQuadric {
         return implicit_.RayRoots(o, d, lo, hi, t);
     }
 
-    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
+    int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
         // sin φ = z/r and cos φ = ρ/|r| ≥ 0; atan2 stays accurate near the poles.
         const double phi = std::atan2(p.z * SignOf(radius_), std::sqrt(p.x * p.x + p.y * p.y));
         c[0] = {(phi - phiMin_) / (phiMax_ - phiMin_), radius_ < 0 ? kPi : 0};
-        return c[0].v >= 0 && c[0].v <= 1 ? 1 : 0;
+        return ClampToUnit(&c[0].v, slack) ? 1 : 0;
     }
+
+    V3d ImplicitGradient(const V3d& p) const override { return implicit_.Gradient(p); }
 
   private:
     double radius_, phiMin_ = 0, phiMax_ = 0;
@@ -111,10 +116,10 @@ class SweptLine final : public RevolvedQuadric {
         return t[0] > lo && t[0] < hi ? 1 : 0;
     }
 
-    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
+    int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
         if (direction_.z != 0) {
-            const double v = (p.z - start_.z) / direction_.z;
-            if (!(v >= 0 && v <= 1)) return 0;
+            double v = (p.z - start_.z) / direction_.z;
+            if (!ClampToUnit(&v, slack)) return 0;
             c[0] = {v, AngleAt(v)};
             return 1;
         }
@@ -126,8 +131,13 @@ class SweptLine final : public RevolvedQuadric {
         const int n = SolveQuadratic(bb, 2 * ab, aa - (p.x * p.x + p.y * p.y), roots);
         int kept = 0;
         for (int i = 0; i < n; ++i)
-            if (roots[i] >= 0 && roots[i] <= 1) c[kept++] = {roots[i], AngleAt(roots[i])};
+            if (ClampToUnit(&roots[i], slack)) c[kept++] = {roots[i], AngleAt(roots[i])};
         return kept;
+    }
+
+    V3d ImplicitGradient(const V3d& p) const override {
+        // A horizontal line sweeps a planar annulus: RayRoots uses no implicit equation there.
+        return direction_.z != 0 ? implicit_.Gradient(p) : V3d(0, 0, 1);
     }
 
   private:
@@ -171,10 +181,12 @@ class Paraboloid final : public RevolvedQuadric {
         return implicit_.RayRoots(o, d, lo, hi, t);
     }
 
-    int ProfileCandidates(const V3d& p, ProfileCandidate c[2]) const override {
+    int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
         c[0] = {(p.z - zmin_) / (zmax_ - zmin_), rmax_ < 0 ? kPi : 0};
-        return c[0].v >= 0 && c[0].v <= 1 ? 1 : 0;
+        return ClampToUnit(&c[0].v, slack) ? 1 : 0;
     }
+
+    V3d ImplicitGradient(const V3d& p) const override { return implicit_.Gradient(p); }
 
   private:
     double rmax_, zmin_, zmax_;

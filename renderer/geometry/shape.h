@@ -67,6 +67,16 @@ class Quadric {
     // The nearest hit with tmin < t < tmax of the ray org + t·dir (dir need not be unit length).
     virtual bool Intersect(const V3f& org, const V3f& dir, float tmin, float tmax,
                            QuadricHit* hit) const = 0;
+    // The same hit without its (u, v): t and the hit point in object space. The ray tracer
+    // calls this for every candidate and ParametersAt only for the hit it shades, since (u, v)
+    // cost inverse trigonometry that deciding a hit on a full sweep does not need.
+    virtual bool IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax, float* t,
+                                V3f* point) const = 0;
+    // The (u, v) of a point IntersectPoint reported (Intersect's (u, v) up to rounding).
+    virtual V2f ParametersAt(const V3f& point) const = 0;
+    // A normal at a point IntersectPoint reported, without (u, v): not normalised, facing
+    // either side; zero where the surface has none (a cone's apex).
+    virtual V3f NormalAt(const V3f& point) const = 0;
     // The surface point at parameters (u, v) in [0,1]².
     virtual SurfaceGeometry Evaluate(float u, float v) const = 0;
 };

@@ -20,6 +20,52 @@ TextureLookup::~TextureLookup() = default;
 
 std::string TextureLookup::LastError() const { return impl_->system->geterror(); }
 
+bool TextureLookup::Info(const std::string& file, const std::string& dataname,
+                         std::vector<float>* floats, std::string* text) {
+    OIIO::TextureSystem* system = impl_->system;
+    // textureinfo() answers 0 for a missing file or fact; OpenImageIO's error would otherwise
+    // linger and be reported later as if a lookup had failed.
+    struct ClearError {
+        OIIO::TextureSystem* system;
+        ~ClearError() { system->geterror(); }
+    } clearError{system};
+    const OIIO::ustring name(file);
+    if (dataname == "resolution" || dataname == "channels") {
+        int values[2] = {0, 0};
+        const bool resolution = dataname == "resolution";
+        const OIIO::TypeDesc type = resolution ? OIIO::TypeDesc(OIIO::TypeDesc::INT, 2)
+                                               : OIIO::TypeDesc(OIIO::TypeDesc::INT);
+        if (!system->get_texture_info(name, 0, OIIO::ustring(dataname), type, values)) return false;
+        floats->assign(values, values + (resolution ? 2 : 1));
+        return true;
+    }
+    if (dataname == "type") {
+        // OpenImageIO's "Plain Texture", "Shadow", "LatLong Environment", ... as maketx
+        // records it; a plain image that can be read is a texture.
+        OIIO::ustring format("Plain Texture");
+        int exists = 0;
+        if (!system->get_texture_info(name, 0, OIIO::ustring("exists"), OIIO::TypeInt, &exists) ||
+            !exists)
+            return false;
+        system->get_texture_info(name, 0, OIIO::ustring("textureformat"), OIIO::TypeString,
+                                 &format);
+        const std::string f = format.string();
+        *text = f.find("Shadow") != std::string::npos        ? "shadow"
+                : f.find("Environment") != std::string::npos ? "environment"
+                                                             : "texture";
+        return true;
+    }
+    const char* matrix = dataname == "viewingmatrix"      ? "worldtocamera"
+                         : dataname == "projectionmatrix" ? "worldtoscreen"
+                                                          : nullptr;
+    if (!matrix) return false;
+    float values[16];
+    if (!system->get_texture_info(name, 0, OIIO::ustring(matrix), OIIO::TypeMatrix, values))
+        return false;
+    floats->assign(values, values + 16);
+    return true;
+}
+
 // Runs `lookup(handle, options, i, result)` for each active point and spreads its `channels`
 // results component-major; texture and environment lookups differ only in that call.
 template <class Lookup>

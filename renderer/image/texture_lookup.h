@@ -23,6 +23,12 @@ class TextureLookup {
     // A lat-long or cube environment map in direction D (3 × n, world space).
     bool Environment(const std::string& file, int firstChannel, int channels, int n,
                      const float* directions, const uint8_t* active, float* out);
+    // textureinfo() (RISpec Table 15.3): "resolution" (2 floats), "channels" (1), "type"
+    // ("texture", "shadow" or "environment"), "viewingmatrix" and "projectionmatrix" (16 floats,
+    // row-major: world to the texture's camera and screen, where the file records them). False
+    // if the file cannot be read or lacks the fact.
+    bool Info(const std::string& file, const std::string& dataname, std::vector<float>* floats,
+              std::string* text);
     // Why the last failed lookup failed.
     std::string LastError() const;
 

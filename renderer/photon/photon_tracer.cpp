@@ -107,11 +107,10 @@ class PathTracer {
 
     void Trace(uint64_t path) {
         PathRandom random(c_.settings.seed, path);
-        float thetaIn, pIn;
-        DrawIncidence(random.Next(), &thetaIn, &pIn);
+        float thetaIn, sinIn, cosIn, pIn;
+        DrawIncidence(random.Next(), &thetaIn, &sinIn, &cosIn, &pIn);
         const bool fixedAzimuth = c_.settings.isotropic && !c_.settings.averageAzimuth;
         const float phiIn = fixedAzimuth ? 0.0f : 2 * kPi * random.Next();
-        const float sinIn = std::sin(thetaIn), cosIn = std::cos(thetaIn);
         const V3f wIn(sinIn * std::cos(phiIn), sinIn * std::sin(phiIn), cosIn);
         const float w = 2 * c_.half;
         const V3f x((random.Next() - 0.5f) * w, (random.Next() - 0.5f) * w, 0);
@@ -125,13 +124,13 @@ class PathTracer {
         std::fill(beta_.begin(), beta_.end(), 1.0f);
         for (int depth = 1;; ++depth) {
             ++out_.stats.bounces;
-            const SurfacePoint sp = c_.scene.Evaluate(org, dir, hit);
-            const V3f wo = Scatter(sp, -dir, random);
+            c_.scene.EvaluateLean(org, dir, hit, &sp_);
+            const V3f wo = Scatter(sp_, -dir, random);
             if (wo == V3f(0)) {
                 ++out_.stats.absorbed;
                 return;
             }
-            org = sp.P + c_.offset * FacingNormal(sp.Ng, wo);
+            org = sp_.P + c_.offset * FacingNormal(sp_.Ng, wo);
             dir = wo;
             const Segment next = TraceSegment(c_, org, dir, &hit);
             if (next == Segment::Escaped) return Escape(thetaIn, phiIn, pIn, wo);
@@ -148,24 +147,29 @@ class PathTracer {
     // maps, and p_in that of the rotation-symmetric law, (1/Δθ)/(2π sin θ′): their domain is
     // θ′ × ω, and a density uniform in θ′ keeps the photons' weights β/p_in bounded at the
     // pole, where cos θ′ uniform would give them infinite variance.
-    void DrawIncidence(float u, float* theta, float* pIn) const {
+    // Also returns sin θ′ and cos θ′, computed once.
+    void DrawIncidence(float u, float* theta, float* sinTheta, float* cosTheta, float* pIn) const {
         const float t0 = c_.settings.thetaMin, t1 = c_.settings.thetaMax;
         if (!c_.settings.isotropic) {
             const float cosIn = c_.cosMax + (c_.cosMin - c_.cosMax) * (1 - u);
             *theta = std::acos(std::min(1.0f, cosIn));
+            *sinTheta = std::sin(*theta);
+            *cosTheta = std::cos(*theta);
             *pIn = c_.pIn;
             return;
         }
         *theta = t0 + (t1 - t0) * (1 - u);  // in (θmin, θmax]
-        *pIn = 1 / ((t1 - t0) * 2 * kPi * std::max(std::sin(*theta), 1e-7f));
+        *sinTheta = std::sin(*theta);
+        *cosTheta = std::cos(*theta);
+        *pIn = 1 / ((t1 - t0) * 2 * kPi * std::max(*sinTheta, 1e-7f));
     }
 
     static V3f FacingNormal(const V3f& n, const V3f& w) { return n.dot(w) < 0 ? -n : n; }
 
     // Samples the micro BRDF at sp for light arriving from wi and multiplies β by f cos/pdf;
     // returns 0 when the photon is absorbed (sampled into the surface, or β vanished).
-    V3f Scatter(const SurfacePoint& sp, const V3f& wi, PathRandom& random) {
-        const MicroBrdf& brdf = c_.brdfs.at(sp.shape);
+    V3f Scatter(const LeanSurfacePoint& sp, const V3f& wi, PathRandom& random) {
+        const MicroBrdf& brdf = BrdfOf(sp.shape);
         // Surfaces reflect on the side the photon arrives from (thin blades are two-sided).
         const V3f ng = FacingNormal(sp.Ng, wi);
         const V3f n = FacingNormal(sp.N, ng);
@@ -204,9 +208,21 @@ class PathTracer {
         for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyUp[k] += beta_[k];
     }
 
+    // Consecutive hits mostly meet the same shape: one table look-up per change of shape.
+    const MicroBrdf& BrdfOf(const SceneShape* shape) {
+        if (shape != lastShape_) {
+            lastShape_ = shape;
+            lastBrdf_ = &c_.brdfs.at(shape);
+        }
+        return *lastBrdf_;
+    }
+
     const TraceContext& c_;
     Batch& out_;
     std::vector<float> beta_;
+    LeanSurfacePoint sp_;  // reused by every hit
+    const SceneShape* lastShape_ = nullptr;
+    const MicroBrdf* lastBrdf_ = nullptr;
 };
 
 void Accumulate(const PhotonStats& from, PhotonStats* to) {

@@ -25,28 +25,42 @@ namespace {
 constexpr int kTileSize = 16;
 constexpr int kMaxLayers = 64;  // transparent surfaces a camera ray may pass through
 
+int OutputFloats(const std::vector<ShaderOutput>& outputs) {
+    int total = 0;
+    for (const ShaderOutput& output : outputs) total += output.width;
+    return total;
+}
+
 // One camera sample on its way through the scene: transparent surfaces let it go on, so its
 // colour is composited front to back over several layers of hits.
 struct SampleState {
     CameraRay ray;
     int px, py, s;
     float x, y;
+    float lensU = 0, lensV = 0;
     float colour[3] = {0, 0, 0};
     float transmittance[3] = {1, 1, 1};
     // Coverage by visible surfaces; matte objects hide what is behind them but add none.
     float alpha = 0;
     float depth = std::numeric_limits<float>::infinity();
     bool alive = true;
+    // Seeds the random() streams of the points this sample hits: a hash of the render's seed,
+    // the pixel and the sample, mixed on at each layer.
+    uint64_t randomSeed = 0;
+    // The AOVs, composited front to back like the colour (empty when no Display asks for one).
+    std::vector<float> outputs;
 };
 
 // The samples of one tile, shaded layer by layer in batches that share attributes.
 class TileRenderer {
   public:
     TileRenderer(const RayScene& scene, const Camera& camera, ShadingWorker& shading,
-                 const Options& options)
+                 const Options& options, const std::vector<ShaderOutput>& outputs)
         : scene_(scene),
           camera_(camera),
           shading_(shading),
+          outputs_(outputs),
+          outputFloats_(OutputFloats(outputs)),
           ncomps_(options.colorComponents),
           colorToRgb_(options.colorToRgb) {}
 
@@ -58,7 +72,11 @@ class TileRenderer {
     // The next visible (not back-face culled) hit of a sample, or false.
     bool NextHit(SampleState& sample, SurfacePoint* sp, float* t);
     void ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
-                    const std::vector<SurfacePoint>& points, const std::vector<float>& hitT);
+                    const std::vector<SurfacePoint>& points, const std::vector<float>& hitT,
+                    const std::vector<float>& hitTnear);
+    // The rays one pixel to the right and one down from a sample's, through the same point of
+    // the lens at the same time: the ray differentials of shaders that take derivatives.
+    NeighbourRays MakeNeighbourRays(const SampleState& sample, float tnear) const;
 
     // Colours of ColorSamples components to RGB through nRGB (RISpec §4.1.3); opacity is the
     // mean of its components on every channel, as a sum through nRGB is no opacity.
@@ -68,6 +86,8 @@ class TileRenderer {
     const RayScene& scene_;
     const Camera& camera_;
     ShadingWorker& shading_;
+    const std::vector<ShaderOutput>& outputs_;
+    int outputFloats_;
     int ncomps_;
     std::vector<float> colorToRgb_;
     uint64_t rays_ = 0;
@@ -111,14 +131,16 @@ bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
 uint64_t TileRenderer::Render(std::vector<SampleState>& samples) {
     rays_ = 0;
     std::vector<int> hitSamples;
-    std::vector<float> hitT;
+    std::vector<float> hitT, hitTnear;
     if (points_.size() < samples.size()) points_.resize(samples.size());
     for (int layer = 0; layer < kMaxLayers; ++layer) {
         hitSamples.clear();
         hitT.clear();
+        hitTnear.clear();
         for (int i = 0; i < int(samples.size()); ++i) {
             SampleState& sample = samples[i];
             if (!sample.alive) continue;
+            const float tnear = sample.ray.tnear;
             float t;
             if (!NextHit(sample, &points_[hitSamples.size()], &t)) {
                 sample.alive = false;
@@ -127,16 +149,30 @@ uint64_t TileRenderer::Render(std::vector<SampleState>& samples) {
             if (std::isinf(sample.depth)) sample.depth = t;
             hitSamples.push_back(i);
             hitT.push_back(t);
+            hitTnear.push_back(tnear);
         }
         if (hitSamples.empty()) break;
-        ShadeLayer(samples, hitSamples, points_, hitT);
+        ShadeLayer(samples, hitSamples, points_, hitT, hitTnear);
     }
     return rays_;
 }
 
+NeighbourRays TileRenderer::MakeNeighbourRays(const SampleState& sample, float tnear) const {
+    NeighbourRays rays;
+    const CameraRay right =
+        camera_.GenerateRay(sample.x + 1, sample.y, sample.lensU, sample.lensV, sample.ray.time);
+    const CameraRay down =
+        camera_.GenerateRay(sample.x, sample.y + 1, sample.lensU, sample.lensV, sample.ray.time);
+    rays.org[0] = right.org, rays.dir[0] = right.dir;
+    rays.org[1] = down.org, rays.dir[1] = down.dir;
+    rays.tnear = tnear;
+    rays.time = sample.ray.time;
+    return rays;
+}
+
 void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
                               const std::vector<SurfacePoint>& points,
-                              const std::vector<float>& hitT) {
+                              const std::vector<float>& hitT, const std::vector<float>& hitTnear) {
     // Batches of points that share their attributes, in a fixed order (first appearance), so
     // that results do not depend on threads.
     std::vector<const Attributes*> order;
@@ -147,22 +183,31 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
         if (isNew) order.push_back(attributes);
         it->second.push_back(k);
     }
-    std::vector<float> Ci, Oi;
+    std::vector<float> Ci, Oi, outputs;
     for (const Attributes* attributes : order) {
         const std::vector<int>& batchMembers = members[attributes];
         ShadingBatch batch;
         batch.attributes = attributes;
+        const bool neighbours = !attributes->matte && shading_.WantsNeighbourRays(attributes);
         for (int k : batchMembers) {
-            const CameraRay& ray = samples[hitSamples[k]].ray;
+            const SampleState& sample = samples[hitSamples[k]];
             batch.points.push_back(&points[k]);
-            batch.incident.push_back(ray.dir * hitT[k]);
+            batch.incident.push_back(sample.ray.dir * hitT[k]);
             batch.depth.push_back(hitT[k]);
+            if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hitTnear[k]));
+            batch.randomSeeds.push_back(sample.randomSeed);
         }
         Ci.assign(batchMembers.size() * ncomps_, 0.f);
         Oi.assign(batchMembers.size() * ncomps_, 0.f);
+        if (outputFloats_ > 0) {
+            outputs.assign(batchMembers.size() * outputFloats_, 0.f);
+            batch.outputs = &outputs_;
+            batch.outputValues = outputs.data();
+        }
         if (!attributes->matte) shading_.Shade(batch, Ci.data(), Oi.data());
         for (size_t j = 0; j < batchMembers.size(); ++j) {
             SampleState& sample = samples[hitSamples[batchMembers[j]]];
+            sample.randomSeed = Mix64(sample.randomSeed);  // the next layer's
             // A matte object hides what lies behind it and adds nothing itself (RISpec
             // §4.2.5): its opacity is the surface's Os, not a shader's output.
             const float* opacities =
@@ -178,8 +223,13 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
                 sample.transmittance[c] *= 1 - opacity;
                 remaining = std::max(remaining, sample.transmittance[c]);
             }
-            if (!attributes->matte) sample.alpha += covered;
             if (remaining < 1e-4f) sample.alive = false;
+            if (attributes->matte) continue;
+            sample.alpha += covered;
+            // AOVs are not premultiplied: each layer adds its value weighted by the coverage
+            // it adds, so an opaque surface's AOV is its value.
+            for (int k = 0; k < outputFloats_; ++k)
+                sample.outputs[k] += covered * outputs[j * outputFloats_ + k];
         }
     }
 }
@@ -211,12 +261,42 @@ std::vector<DisplaySpec> Displays(const Frame& frame, const RenderSettings& sett
         std::string stem = std::filesystem::path(frame.sceneFile).stem().string();
         if (stem.empty() || stem == "-") stem = "gonio";
         displays.push_back({stem + ".tif", "file", "rgba", {}, FileLoc{}});
-        diagnostics.NoteOnce("no display", FileLoc{},
-                             "no Display given: writing " + displays.back().name);
+        if (settings.outputOverride.empty())
+            diagnostics.NoteOnce("no display", FileLoc{},
+                                 "no Display given: writing " + displays.back().name);
     }
     if (!settings.outputOverride.empty())
         displays[0].name = OutputName(settings.outputOverride, frame.number);
     return displays;
+}
+
+// The AOVs the displays ask for: every mode that is not made of the standard channels (rgb,
+// rgba, z, ...) names a shader variable. Their channels are appended to `channelNames` as
+// name (one float), name.r, name.g, ... (colours) or name.x, name.y, ... (the rest); the image
+// writer selects them by the mode. A name no shader has gets no channels, and its Display
+// then fails with the writer's message.
+std::vector<ShaderOutput> OutputsOfDisplays(const std::vector<DisplaySpec>& displays,
+                                            const SurfaceShading& shading,
+                                            std::vector<std::string>* channelNames) {
+    static const std::vector<std::string> kStandard = {"r", "g", "b", "a", "z"};
+    std::vector<ShaderOutput> outputs;
+    for (const DisplaySpec& display : displays) {
+        std::string unused;
+        if (!SelectDisplayChannels(display.mode, kStandard, unused).empty()) continue;
+        ShaderOutput output{display.mode};
+        const bool seen = std::any_of(outputs.begin(), outputs.end(),
+                                      [&](const ShaderOutput& o) { return o.name == output.name; });
+        if (seen || !shading.DescribeOutput(&output)) continue;
+        for (int c = 0; c < output.width; ++c) {
+            const char* suffixes = output.isColor ? "rgb" : "xyz";
+            const std::string suffix = output.width == 1   ? ""
+                                       : output.width <= 3 ? std::string(".") + suffixes[c]
+                                                           : "." + std::to_string(c);
+            channelNames->push_back(output.name + suffix);
+        }
+        outputs.push_back(output);
+    }
+    return outputs;
 }
 
 }  // namespace
@@ -230,17 +310,20 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
 
     const int xsamples = std::max(1, int(std::lround(options.xsamples)));
     const int ysamples = std::max(1, int(std::lround(options.ysamples)));
+    const std::vector<DisplaySpec> displays = Displays(frame, settings, diagnostics);
+    std::vector<std::string> channelNames = {"r", "g", "b", "a", "z"};
+    const std::unique_ptr<SurfaceShading> shading =
+        MakeShaderShading(frame, scene, camera, diagnostics);
+    const std::vector<ShaderOutput> outputs = OutputsOfDisplays(displays, *shading, &channelNames);
     const FilmSpec spec = FilmSpec::FromCropWindow(
         options.xres, options.yres, options.cropWindow[0], options.cropWindow[1],
-        options.cropWindow[2], options.cropWindow[3], xsamples, ysamples, kStandardChannelCount);
+        options.cropWindow[2], options.cropWindow[3], xsamples, ysamples, int(channelNames.size()));
     Film film(spec, MakeFilter(options, diagnostics));
     const Imath::Box2i range = film.PixelRange();
     const int width = range.max.x - range.min.x + 1, height = range.max.y - range.min.y + 1;
 
     Progress progress("render", uint64_t(width) * height, settings.progress);
     std::atomic<uint64_t> raysTraced{0};
-    const std::unique_ptr<SurfaceShading> shading =
-        MakeShaderShading(frame, scene, camera, diagnostics);
     tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
         [&] { return shading->MakeWorker(); });
     tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
@@ -257,14 +340,17 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
                             // Stratified: one jittered sample in each cell of the pixel's grid.
                             SampleState sample;
                             sample.px = px, sample.py = py, sample.s = s;
+                            sample.randomSeed = random.Seed();
+                            sample.outputs.assign(size_t(OutputFloats(outputs)), 0.f);
                             sample.x = px + (sx + random.Next()) / xsamples;
                             sample.y = py + (sy + random.Next()) / ysamples;
-                            const float lensU = random.Next(), lensV = random.Next();
+                            sample.lensU = random.Next(), sample.lensV = random.Next();
                             const float time =
                                 options.shutterOpen +
                                 random.Next() *
                                     std::max(0.f, options.shutterClose - options.shutterOpen);
-                            sample.ray = camera.GenerateRay(sample.x, sample.y, lensU, lensV, time);
+                            sample.ray = camera.GenerateRay(sample.x, sample.y, sample.lensU,
+                                                            sample.lensV, time);
                             samples.push_back(sample);
                         }
                     }
@@ -272,26 +358,26 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
             }
             auto& renderer = renderers.local();
             if (!renderer)
-                renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options);
+                renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options,
+                                                          outputs);
             raysTraced += renderer->Render(samples);
             for (const SampleState& sample : samples) {
-                const float values[kStandardChannelCount] = {sample.colour[0], sample.colour[1],
-                                                             sample.colour[2], sample.alpha,
-                                                             sample.depth};
-                film.SetSample(sample.px, sample.py, sample.s, sample.x, sample.y, values);
+                std::vector<float> values = {sample.colour[0], sample.colour[1], sample.colour[2],
+                                             sample.alpha, sample.depth};
+                values.insert(values.end(), sample.outputs.begin(), sample.outputs.end());
+                film.SetSample(sample.px, sample.py, sample.s, sample.x, sample.y, values.data());
             }
             progress.Advance(uint64_t(tile.rows().size()) * tile.cols().size());
         });
     progress.Done();
 
     const Image image = film.Resolve();
-    static const std::vector<std::string> kChannelNames = {"r", "g", "b", "a", "z"};
     Exposure exposure{options.gain, options.gamma};
     const QuantizeSetting& cq = options.colorQuantize;
     const QuantizeSetting& dq = options.depthQuantize;
     bool ok = true;
-    for (const DisplaySpec& display : Displays(frame, settings, diagnostics))
-        ok &= WriteDisplay(display, image, kChannelNames, exposure,
+    for (const DisplaySpec& display : displays)
+        ok &= WriteDisplay(display, image, channelNames, exposure,
                            Quantization{cq.one, cq.min, cq.max, cq.dither},
                            Quantization{dq.one, dq.min, dq.max, dq.dither}, diagnostics);
     if (stats) {

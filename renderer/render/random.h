@@ -30,6 +30,9 @@ class SampleRandom {
               HashCombine(HashCombine(Mix64(seed), uint64_t(uint32_t(px))), uint64_t(uint32_t(py))),
               uint64_t(sample))) {}
     float Next() { return ToUnitFloat(Mix64(state_ += 0x9e3779b97f4a7c15ull)); }
+    // A seed for another stream of this pixel sample (the shaders' random()), independent of
+    // this one's values.
+    uint64_t Seed() const { return Mix64(state_ ^ 0x5eedc0de5eedc0deull); }
 
   private:
     uint64_t state_;

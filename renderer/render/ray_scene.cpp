@@ -53,6 +53,18 @@ struct QuadricGeometry {
     M44f spaceFromObject;
 };
 
+// p·M for an affine M (Imath's multVecMatrix also divides by w, which costs a division per ray).
+V3f AffinePoint(const M44f& m, float x, float y, float z) {
+    return V3f(x * m[0][0] + y * m[1][0] + z * m[2][0] + m[3][0],
+               x * m[0][1] + y * m[1][1] + z * m[2][1] + m[3][1],
+               x * m[0][2] + y * m[1][2] + z * m[2][2] + m[3][2]);
+}
+
+V3f AffineVector(const M44f& m, float x, float y, float z) {
+    return V3f(x * m[0][0] + y * m[1][0] + z * m[2][0], x * m[0][1] + y * m[1][1] + z * m[2][1],
+               x * m[0][2] + y * m[1][2] + z * m[2][2]);
+}
+
 void QuadricBounds(const RTCBoundsFunctionArguments* args) {
     const auto* q = static_cast<const QuadricGeometry*>(args->geometryUserPtr);
     const Box3f box = q->quadric->Bounds();
@@ -67,33 +79,39 @@ void QuadricBounds(const RTCBoundsFunctionArguments* args) {
     b->upper_x = out.max.x, b->upper_y = out.max.y, b->upper_z = out.max.z;
 }
 
-bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, unsigned i,
-                         QuadricHit* hit) {
-    const V3f org(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i));
-    const V3f dir(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i));
+// Only t and the object-space hit point: (u, v) follow in Evaluate for the hit that is shaded.
+bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, unsigned i, float* t,
+                         V3f* objectP) {
+    const M44f& m = q->objectFromSpace;
     // An affine map keeps the ray parameter: t is the same in object space.
-    return q->quadric->Intersect(TransformPoint(q->objectFromSpace, org),
-                                 TransformVector(q->objectFromSpace, dir),
-                                 RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i), hit);
+    return q->quadric->IntersectPoint(
+        AffinePoint(m, RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i),
+                    RTCRayN_org_z(rays, N, i)),
+        AffineVector(m, RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i),
+                     RTCRayN_dir_z(rays, N, i)),
+        RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i), t, objectP);
 }
 
 void QuadricIntersect(const RTCIntersectFunctionNArguments* args) {
     const auto* q = static_cast<const QuadricGeometry*>(args->geometryUserPtr);
-    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
-    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
-    for (unsigned i = 0; i < args->N; ++i) {
+    const unsigned N = args->N;
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
+    for (unsigned i = 0; i < N; ++i) {
         if (!args->valid[i]) continue;
-        QuadricHit hit;
-        if (!IntersectQuadricRay(q, rays, args->N, i, &hit)) continue;
-        RTCRayN_tfar(rays, args->N, i) = hit.t;
-        RTCHitN_u(hits, args->N, i) = hit.u;
-        RTCHitN_v(hits, args->N, i) = hit.v;
-        RTCHitN_Ng_x(hits, args->N, i) = 0;
-        RTCHitN_Ng_y(hits, args->N, i) = 0;
-        RTCHitN_Ng_z(hits, args->N, i) = 1;
-        RTCHitN_primID(hits, args->N, i) = args->primID;
-        RTCHitN_geomID(hits, args->N, i) = args->geomID;
-        RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+        float t;
+        V3f p;
+        if (!IntersectQuadricRay(q, rays, N, i, &t, &p)) continue;
+        RTCRayN_tfar(rays, N, i) = t;
+        // The hit point in object space rides in Ng (see RayHit::Ng); (u, v) are not known yet.
+        RTCHitN_u(hits, N, i) = 0;
+        RTCHitN_v(hits, N, i) = 0;
+        RTCHitN_Ng_x(hits, N, i) = p.x;
+        RTCHitN_Ng_y(hits, N, i) = p.y;
+        RTCHitN_Ng_z(hits, N, i) = p.z;
+        RTCHitN_primID(hits, N, i) = args->primID;
+        RTCHitN_geomID(hits, N, i) = args->geomID;
+        RTCHitN_instID(hits, N, i, 0) = args->context->instID[0];
     }
 }
 
@@ -101,8 +119,9 @@ void QuadricOccluded(const RTCOccludedFunctionNArguments* args) {
     const auto* q = static_cast<const QuadricGeometry*>(args->geometryUserPtr);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
-        QuadricHit hit;
-        if (IntersectQuadricRay(q, args->ray, args->N, i, &hit))
+        float t;
+        V3f p;
+        if (IntersectQuadricRay(q, args->ray, args->N, i, &t, &p))
             RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
     }
 }
@@ -129,6 +148,11 @@ struct GeometryRecord {
     std::vector<int> attributeSlot;
     // Indices into *vars of the standard variables, -1 when absent.
     int cs = -1, os = -1, st = -1, s = -1, t = -1;
+    // A triangle mesh whose normal is Embree's Ng, or a quadric whose normal is that of its
+    // implicit equation, and whose colour is its attributes' (no N, no Cs primitive
+    // variable): EvaluateLean needs nothing else.
+    bool flatMesh = false;
+    bool plainQuadric = false;
 };
 
 struct SceneLevel {
@@ -196,6 +220,18 @@ struct RayScene::Impl {
     RTCGeometry MakePoints(const PointSet& points, const M44f& m);
     ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit,
                              const V3f& spaceP) const;
+    // The record of a hit's geometry, its attributes (an instance's for the shape, or the
+    // shape's own) and the instance that placed it (null at the top level).
+    struct ResolvedHit {
+        const GeometryRecord* record;
+        const Attributes* attributes;
+        const InstancePlacement* placement;
+    };
+    ResolvedHit Resolve(const RayHit& hit) const;
+    // The transforms between the world and the space the hit's geometry was built in (the
+    // world itself at the top level, an object definition's space in an instance).
+    static void SpaceTransforms(const InstancePlacement* placement, float time,
+                                M44f* worldFromSpace, M44f* spaceFromWorld);
 };
 
 void RayScene::Impl::Attach(SceneLevel& level, RTCGeometry geometry,
@@ -422,6 +458,10 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
                                     : nullptr;
         if (index) *index = static_cast<int>(i);
     }
+    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry))
+        record->flatMesh = mesh->normals.empty() && mesh->cornerNormals.empty() && record->cs < 0;
+    if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry))
+        record->plainQuadric = !quadric->vars.Find("N") && record->cs < 0;
     Attach(level, g, std::move(record));
 }
 
@@ -535,12 +575,14 @@ bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar,
 ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
                                          const V3f& spaceP) const {
     const ShapeGeometry& geometry = record.shape->geometry;
-    const V3f objectP = TransformPoint(record.objectFromSpace, spaceP);
-    const V3f objectNg = TransformNormal(record.spaceFromObject, hit.Ng);
     if (const auto* mesh = std::get_if<TriangleMesh>(&geometry))
         return EvaluateMesh(*mesh, hit.primID, hit.u, hit.v);
-    if (const auto* quadric = std::get_if<QuadricShape>(&geometry))
-        return EvaluateQuadric(*quadric, hit.u, hit.v);
+    if (const auto* quadric = std::get_if<QuadricShape>(&geometry)) {
+        const V2f uv = quadric->quadric->ParametersAt(hit.Ng);  // Ng holds the object-space P
+        return EvaluateQuadric(*quadric, uv.x, uv.y);
+    }
+    const V3f objectP = TransformPoint(record.objectFromSpace, spaceP);
+    const V3f objectNg = TransformNormal(record.spaceFromObject, hit.Ng);
     if (const auto* curves = std::get_if<CurveSet>(&geometry))
         return EvaluateCurve(*curves, hit.primID, hit.u, hit.v, objectP, objectNg);
     if (std::holds_alternative<PointSet>(geometry))
@@ -587,6 +629,68 @@ bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& nam
     return false;
 }
 
+RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID) {
+        const GeometryRecord* record = top.records[hit.geomID].get();
+        return {record, record->shape->attributes.get(), nullptr};
+    }
+    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
+    const GeometryRecord* record = definitions[placement.level].records[hit.geomID].get();
+    const Attributes* attributes = record->shape->attributes.get();
+    if (const ObjectInstanceUse* use = placement.use)
+        attributes = use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
+    return {record, attributes, &placement};
+}
+
+void RayScene::Impl::SpaceTransforms(const InstancePlacement* placement, float time,
+                                     M44f* worldFromSpace, M44f* spaceFromWorld) {
+    if (!placement) {
+        worldFromSpace->makeIdentity();
+        spaceFromWorld->makeIdentity();
+    } else if (placement->motion.empty()) {
+        *worldFromSpace = placement->worldFromDefinition;
+        *spaceFromWorld = placement->definitionFromWorld;
+    } else {
+        *worldFromSpace = TransformAt(placement->motionTimes, placement->motion, time);
+        *spaceFromWorld = worldFromSpace->inverse();
+    }
+}
+
+void RayScene::EvaluateLean(const V3f& org, const V3f& dir, const RayHit& hit,
+                            LeanSurfacePoint* out) const {
+    const Impl::ResolvedHit resolved = impl_->Resolve(hit);
+    const GeometryRecord& record = *resolved.record;
+    V3f objectN(0);  // a quadric's normal in its object space (Ng holds its hit point there)
+    if (record.plainQuadric)
+        objectN = std::get<QuadricShape>(record.shape->geometry).quadric->NormalAt(hit.Ng);
+    if (!record.flatMesh && objectN == V3f(0)) {
+        SurfacePoint& sp = out->scratch;
+        Evaluate(org, dir, hit, &sp);
+        out->P = sp.P, out->N = sp.N, out->Ng = sp.Ng;
+        out->Cs.assign(sp.Cs.begin(), sp.Cs.end());
+        out->shape = sp.shape;
+        out->attributes = sp.attributes;
+        return;
+    }
+    // Embree's Ng is in the space the mesh was built in, a quadric's normal in its object
+    // space; a normal goes to the world by the inverse transpose of worldFromSpace.
+    out->P = org + hit.t * dir;
+    const bool quadric = !record.flatMesh;
+    if (resolved.placement) {
+        M44f worldFromSpace, spaceFromWorld;
+        Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
+        out->Ng =
+            Normalized(quadric ? TransformNormal(spaceFromWorld * record.objectFromSpace, objectN)
+                               : TransformNormal(spaceFromWorld, hit.Ng));
+    } else {
+        out->Ng = Normalized(quadric ? TransformNormal(record.objectFromSpace, objectN) : hit.Ng);
+    }
+    out->N = out->Ng;
+    out->shape = record.shape;
+    out->attributes = resolved.attributes;
+    out->Cs.assign(resolved.attributes->color.begin(), resolved.attributes->color.end());
+}
+
 SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit) const {
     SurfacePoint sp;
     Evaluate(org, dir, hit, &sp);
@@ -596,25 +700,10 @@ SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hi
 void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
                         SurfacePoint* out) const {
     const Impl& s = *impl_;
-    const GeometryRecord* record;
-    const Attributes* instanceAttributes = nullptr;
+    const Impl::ResolvedHit resolved = s.Resolve(hit);
+    const GeometryRecord* record = resolved.record;
     M44f worldFromSpace, spaceFromWorld;
-    if (hit.instID != RTC_INVALID_GEOMETRY_ID) {
-        const InstancePlacement& placement = s.instances[s.top.records[hit.instID]->instance];
-        record = s.definitions[placement.level].records[hit.geomID].get();
-        if (placement.motion.empty()) {
-            worldFromSpace = placement.worldFromDefinition;
-            spaceFromWorld = placement.definitionFromWorld;
-        } else {
-            worldFromSpace = TransformAt(placement.motionTimes, placement.motion, hit.time);
-            spaceFromWorld = worldFromSpace.inverse();
-        }
-        if (const ObjectInstanceUse* use = placement.use)
-            instanceAttributes =
-                use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
-    } else {
-        record = s.top.records[hit.geomID].get();
-    }
+    Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
     const V3f worldP = org + hit.t * dir;
     const ObjectHit object = s.EvaluateObject(*record, hit, TransformPoint(spaceFromWorld, worldP));
 
@@ -636,7 +725,7 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     sp.hitU = hit.u, sp.hitV = hit.v;
     sp.stencils = object.stencils;
 
-    sp.attributes = instanceAttributes ? instanceAttributes : record->shape->attributes.get();
+    sp.attributes = resolved.attributes;
     const Attributes& attributes = *sp.attributes;
     sp.Cs = attributes.color;
     sp.Os = attributes.opacity;

@@ -19,7 +19,23 @@ struct RayHit {
     float time = 0;  // when the ray travelled (shutter time)
     unsigned geomID = 0, primID = 0, instID = 0;
     float u = 0, v = 0;
-    Imath::V3f Ng;  // as Embree reports it: not normalised, in the hit geometry's space
+    // As Embree reports it: not normalised, in the hit geometry's space. For a quadric, the
+    // hit point in the quadric's object space instead, from which Evaluate derives (u, v) and
+    // the normal (u, v above are then 0).
+    Imath::V3f Ng;
+};
+
+// The little a particle tracer needs at a hit (RayScene::EvaluateLean): the point, the normals
+// and the colour, without (u, v), derivatives, s, t or primitive-variable stencils.
+struct LeanSurfacePoint {
+    Imath::V3f P;  // world space
+    // World space, unit length. Unlike SurfacePoint's they may face either side of the
+    // surface: a caller faces them towards the ray.
+    Imath::V3f N, Ng;
+    std::vector<float> Cs;  // ncomps values
+    const SceneShape* shape = nullptr;
+    const Attributes* attributes = nullptr;
+    SurfacePoint scratch;  // reused by EvaluateLean for shapes it evaluates in full
 };
 
 class RayScene {
@@ -41,6 +57,13 @@ class RayScene {
     // The same into an existing point, reusing its colour storage (no allocation in loops).
     void Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
                   SurfacePoint* sp) const;
+
+    // The point, normals and colour at a hit, for loops that trace many paths: flat triangle
+    // meshes take them from Embree's own normal and quadrics from their implicit equation
+    // (either without N or Cs primitive variables), everything else from Evaluate. Reuses
+    // `out`'s storage (no allocation once it has grown).
+    void EvaluateLean(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
+                      LeanSurfacePoint* out) const;
 
     // The primitive variable `name` of the shape at a hit, interpolated by its class (in the
     // primitive's object space, as given). False if the shape has no such variable.

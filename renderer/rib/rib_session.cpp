@@ -13,6 +13,7 @@
 
 #include "rib/rib_file_parser.h"
 #include "rib/rib_parser.h"
+#include "rib/search_path.h"
 
 namespace gonio {
 namespace {
@@ -154,19 +155,7 @@ void RibSession::OptionSeen(const std::string& name, const ParamList& params) {
     for (const Param& param : params) {
         if (BareToken(param.token) != "archive" || !param.isString || param.strings.empty())
             continue;
-        std::vector<std::string> path;
-        const std::string& text = param.strings[0];
-        std::size_t start = 0;
-        while (start <= text.size()) {
-            const std::size_t end = std::min(text.find(':', start), text.size());
-            const std::string entry = text.substr(start, end - start);
-            if (entry == "&")
-                path.insert(path.end(), archivePath_.begin(), archivePath_.end());
-            else if (!entry.empty() && entry != "@")
-                path.push_back(entry);
-            start = end + 1;
-        }
-        archivePath_ = std::move(path);
+        archivePath_ = ExpandSearchPath(param.strings[0], archivePath_, {});
     }
 }
 

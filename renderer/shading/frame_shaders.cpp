@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "rib/search_path.h"
+
 namespace gonio {
 namespace {
 
@@ -31,24 +33,32 @@ std::string RequestKey(const ShaderInstance& request) {
     return key.str();
 }
 
-// The shader search path: Option "searchpath" "shader" with '&' for the previous path and '@'
-// for the default, which is the scene's folder and then the shaders that ship with gonio.
-std::string ShaderSearchPath(const Frame& frame) {
-    std::string sceneFolder = std::filesystem::path(frame.sceneFile).parent_path().string();
-    if (sceneFolder.empty()) sceneFolder = ".";
-    const std::string standard = sceneFolder + ":" + DefaultShaderFolder();
+// The folder of the frame's RIB file ("." for standard input).
+std::string SceneFolder(const Frame& frame) {
+    const std::string folder = std::filesystem::path(frame.sceneFile).parent_path().string();
+    return folder.empty() ? "." : folder;
+}
+
+// `Option "searchpath" kind`, whose '&' and '@' stand for `standard`; `standard` when unset.
+std::vector<std::string> SearchPath(const Frame& frame, const std::string& kind,
+                                    const std::vector<std::string>& standard) {
     auto it = frame.options.user.find("searchpath");
     if (it == frame.options.user.end()) return standard;
     for (const Param& p : it->second) {
-        if (p.token != "uniform string shader" || p.strings.empty()) continue;
-        std::string path = p.strings[0];
-        for (size_t at = path.find('@'); at != std::string::npos; at = path.find('@'))
-            path.replace(at, 1, standard);
-        for (size_t amp = path.find('&'); amp != std::string::npos; amp = path.find('&'))
-            path.replace(amp, 1, standard);
-        return path;
+        if (p.token != "uniform string " + kind || p.strings.empty()) continue;
+        return ExpandSearchPath(p.strings[0], standard, standard);
     }
     return standard;
+}
+
+// Shaders are looked for next to the scene, then among those that ship with gonio.
+std::vector<std::string> ShaderSearchPath(const Frame& frame) {
+    return SearchPath(frame, "shader", {SceneFolder(frame), DefaultShaderFolder()});
+}
+
+// Textures and .grd files: relative to the working folder, then next to the scene.
+std::vector<std::string> FrameTextureSearchPath(const Frame& frame) {
+    return SearchPath(frame, "texture", {".", SceneFolder(frame)});
 }
 
 }  // namespace
@@ -60,6 +70,7 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
       diagnostics_(diagnostics),
       system_(std::make_unique<sl::ShadingSystem>(diagnostics, frame.options.colorComponents)) {
     system_->SetSearchPath(ShaderSearchPath(frame));
+    texturePath_ = FrameTextureSearchPath(frame);
     for (const SceneShape& shape : frame.shapes) AddShapeGroup(shape, *shape.attributes);
     for (const ObjectInstanceUse& use : frame.instances)
         for (size_t i = 0; i < use.definition->shapes.size(); ++i)
@@ -75,6 +86,16 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
     // before the threads share them.
     for (auto& [key, instance] : instances_)
         if (instance) instance->Specialize();
+    for (auto& [attributes, group] : groups_) {
+        for (const auto* instance :
+             {group.surface.get(), group.displacement.get(), group.atmosphere.get()}) {
+            const ShaderNeeds needs = ScanShaderNeeds(instance);
+            group.needs.derivatives |= needs.derivatives;
+            group.needs.trace |= needs.trace;
+        }
+        anyTakesDerivatives_ |= group.needs.derivatives;
+    }
+    traceMaxDepth_ = gonio::TraceMaxDepth(frame);
 }
 
 std::shared_ptr<sl::ShaderInstance> FrameShaders::Instance(const ShaderInstance& request,

@@ -13,6 +13,7 @@
 #include "rib/diagnostics.h"
 #include "scene/frame.h"
 #include "shaderlang/shading_system.h"
+#include "shading/shader_needs.h"
 
 namespace gonio {
 
@@ -24,6 +25,7 @@ struct ShaderGroup {
     const ShaderInstance* surfaceRequest = nullptr;    // for "shader" space
     // Names of primitive variables bound to surface-shader parameters.
     std::vector<std::string> boundPrimvars;
+    ShaderNeeds needs;  // of the surface, displacement and atmosphere together
 };
 
 struct FrameLight {
@@ -39,10 +41,19 @@ class FrameShaders {
     // The group of an attribute state seen in the frame (null if the frame never used it).
     const ShaderGroup* Group(const Attributes* attributes) const;
     const std::vector<FrameLight>& Lights() const { return lights_; }
+    // Whether points of this group are shaded together with neighbour points (derivatives):
+    // when its shaders take derivatives, or trace rays while some shader of the frame takes
+    // them (the neighbours' traced rays are the ray differentials of the traced rays).
+    bool WantsNeighbours(const ShaderGroup& group) const {
+        return group.needs.derivatives || (group.needs.trace && anyTakesDerivatives_);
+    }
+    int TraceMaxDepth() const { return traceMaxDepth_; }  // shader_needs.h
     const Frame& GetFrame() const { return frame_; }
     Diagnostics& GetDiagnostics() const { return diagnostics_; }
     // Camera ("current") space from world space.
     const M44f& CurrentFromWorld() const { return frame_.options.cameraFromWorld; }
+    // Where texture(), environment() and brdf() look for relative file names.
+    const std::vector<std::string>& TextureSearchPath() const { return texturePath_; }
 
   private:
     std::shared_ptr<sl::ShaderInstance> Instance(const ShaderInstance& request,
@@ -57,6 +68,9 @@ class FrameShaders {
     std::map<std::string, std::shared_ptr<sl::ShaderInstance>> instances_;  // by request text
     std::map<const Attributes*, ShaderGroup> groups_;
     std::vector<FrameLight> lights_;
+    bool anyTakesDerivatives_ = false;
+    int traceMaxDepth_ = kDefaultTraceMaxDepth;
+    std::vector<std::string> texturePath_;
 };
 
 // The folder of the standard shaders that ship with gonio (the source tree's shaders/).

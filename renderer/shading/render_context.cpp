@@ -1,9 +1,12 @@
 #include "shading/render_context.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "image/texture_lookup.h"
+#include "rib/search_path.h"
 
 namespace gonio {
 namespace {
@@ -14,24 +17,41 @@ V3f ToV3(const float* data, int n, int i) { return V3f(data[i], data[n + i], dat
 
 RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
                              const Camera& camera, TextureLookup& textures,
-                             sl::ShaderExecutor& lightExecutor)
+                             sl::ShaderExecutor& lightExecutor, RayTracer& tracer, int depth)
     : shaders_(shaders),
       scene_(scene),
       camera_(camera),
       textures_(textures),
       lightExecutor_(lightExecutor),
+      tracer_(tracer),
+      depth_(depth),
       worldFromCurrent_(shaders.CurrentFromWorld().inverse()) {
     colorComponents_ = shaders.GetFrame().options.colorComponents;
 }
 
 void RenderContext::Begin(const ShadingBatch& batch, const float* currentP,
-                          const ShaderInstance* shader) {
+                          const ShaderInstance* shader, const BatchNeighbours* neighbours) {
     batch_ = &batch;
     currentP_ = currentP;
     shader_ = shader;
     n_ = static_cast<int>(batch.points.size());
+    neighbours_ = neighbours && neighbours->mainCount * 3 == n_ ? neighbours : nullptr;
     lightsValid_ = false;
     noNeighbours_.assign(n_, -1);
+    messageShaders_.Clear();
+    SeedRandom(batch.randomSeeds.size() == size_t(n_) ? batch.randomSeeds.data() : nullptr);
+}
+
+template <typename T>
+void RenderContext::ShareWithNeighbours(std::vector<T>* values, int planes) const {
+    const int main = MainCount();
+    if (main == n_ || values->size() != size_t(planes) * main) return;
+    std::vector<T> all(size_t(planes) * n_);
+    for (int c = 0; c < planes; ++c)
+        for (int i = 0; i < main; ++i)
+            for (int k = 0; k < 3; ++k)
+                all[size_t(c) * n_ + k * main + i] = (*values)[c * main + i];
+    values->swap(all);
 }
 
 bool RenderContext::CurrentFromSpace(const std::string& space, int point, M44f* m) const {
@@ -67,36 +87,61 @@ const std::vector<sl::LightResult>& RenderContext::Lights() {
     const std::vector<FrameLight>& lights = shaders_.Lights();
     const std::vector<SceneLight>& sceneLights = shaders_.GetFrame().lights;
     const ShaderInstance* surfaceShader = shader_;
+    // Neighbour points share their main point's lights: they lie a pixel away, and running the
+    // lights and their shadow rays for them would triple the cost.
+    const int all = n_, main = MainCount();
+    lightP_ = currentP_;
+    if (main < all) {
+        mainP_.resize(3 * size_t(main));
+        for (int c = 0; c < 3; ++c)
+            std::copy(currentP_ + size_t(c) * all, currentP_ + size_t(c) * all + main,
+                      mainP_.begin() + size_t(c) * main);
+        lightP_ = mainP_.data();
+    }
+    n_ = main;
     for (int index : batch_->attributes->activeLights) {
         const FrameLight& light = lights[index];
         if (!light.instance) continue;
         sl::ShaderGlobals globals;
         globals.n = n_;
-        globals.Ps = currentP_;
+        globals.Ps = lightP_;
         sl::LightResult result;
         shader_ = &sceneLights[index].light.shader;  // "shader" space is the light's
         lightExecutor_.RunLight(*light.instance, globals, *this, &result);
         result.shaderIndex = index;
+        if (captureLights_)
+            sl::CaptureLightParameters(*light.instance, lightExecutor_, n_, &result);
         if (light.castsShadows && !result.ambient) TraceShadows(&result);
         lights_.push_back(std::move(result));
+    }
+    n_ = all;
+    for (sl::LightResult& result : lights_) {
+        ShareWithNeighbours(&result.L, 3);
+        ShareWithNeighbours(&result.Cl, colorComponents_);
+        ShareWithNeighbours(&result.Ol, colorComponents_);
+        ShareWithNeighbours(&result.lit, 1);
+        for (sl::LightResult::Parameter& p : result.parameters)
+            if (p.varying) ShareWithNeighbours(&p.floats, p.width);
     }
     shader_ = surfaceShader;
     return lights_;
 }
 
 // A point whose way to the light is blocked receives nothing from it. L runs from the surface
-// point to the light, so the shadow ray ends just before L's tip.
+// point to the light, so the shadow ray ends just before L's tip; for a solar light L is only a
+// direction, and the ray goes on for ever.
 void RenderContext::TraceShadows(sl::LightResult* light) const {
     for (int i = 0; i < n_; ++i) {
         if (!light->lit[i]) continue;
-        V3f L = ToV3(light->L.data(), n_, i), P = ToV3(currentP_, n_, i);
+        V3f L = ToV3(light->L.data(), n_, i), P = ToV3(lightP_, n_, i);
         V3f org, dir;
         worldFromCurrent_.multVecMatrix(P, org);
         worldFromCurrent_.multDirMatrix(L, dir);
         const float eps = 1e-4f * std::max(1.f, org.length() / std::max(dir.length(), 1e-20f));
         // Shadows are traced at the shutter's opening: points of a batch have no common time.
         const float time = shaders_.GetFrame().options.shutterOpen;
-        if (!scene_.Occluded(org, dir, eps, 1 - 1e-4f, time)) continue;
+        const float end = light->atInfinity ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
+        if (!scene_.Occluded(org, dir, eps, end, time)) continue;
         for (int c = 0; c < colorComponents_; ++c) light->Cl[c * n_ + i] = 0;
     }
 }
@@ -104,8 +149,8 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
 bool RenderContext::Texture(const std::string& name, int firstChannel, int channels, const float* s,
                             const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                             const float* dtdy, const uint8_t* active, float* out) {
-    const bool ok = textures_.Texture(name, firstChannel, channels, n_, s, t, dsdx, dtdx, dsdy,
-                                      dtdy, active, out);
+    const bool ok = textures_.Texture(FindTexture(name), firstChannel, channels, n_, s, t, dsdx,
+                                      dtdx, dsdy, dtdy, active, out);
     if (!ok)
         RuntimeWarning("texture " + name, "texture \"" + name + "\": " + textures_.LastError());
     return ok;
@@ -120,12 +165,32 @@ bool RenderContext::Environment(const std::string& name, int firstChannel, int c
         worldFromCurrent_.multDirMatrix(ToV3(directions, n_, i), d);
         world[i] = d.x, world[n_ + i] = d.y, world[2 * n_ + i] = d.z;
     }
-    const bool ok =
-        textures_.Environment(name, firstChannel, channels, n_, world.data(), active, out);
+    const bool ok = textures_.Environment(FindTexture(name), firstChannel, channels, n_,
+                                          world.data(), active, out);
     if (!ok)
         RuntimeWarning("environment " + name,
                        "environment \"" + name + "\": " + textures_.LastError());
     return ok;
+}
+
+std::string RenderContext::FindTexture(const std::string& name) const {
+    const std::string found = FindOnSearchPath(name, shaders_.TextureSearchPath());
+    // Not found: the name as given, so that the reader's error message names what was asked.
+    return found.empty() ? name : found;
+}
+
+// The matrices a texture was made with take world space to its camera and screen; the
+// shader works in current space.
+bool RenderContext::TextureInfo(const std::string& name, const std::string& dataname,
+                                std::vector<float>* floats, std::string* text) {
+    if (!textures_.Info(FindTexture(name), dataname, floats, text)) return false;
+    if ((dataname == "viewingmatrix" || dataname == "projectionmatrix") && floats->size() == 16) {
+        M44f fromWorld;
+        for (int i = 0; i < 16; ++i) fromWorld[i / 4][i % 4] = (*floats)[i];
+        const M44f fromCurrent = worldFromCurrent_ * fromWorld;
+        for (int i = 0; i < 16; ++i) (*floats)[i] = fromCurrent[i / 4][i % 4];
+    }
+    return true;
 }
 
 bool RenderContext::Shadow(const std::string& name, const float*, const uint8_t*, float* out) {
@@ -137,9 +202,56 @@ bool RenderContext::Shadow(const std::string& name, const float*, const uint8_t*
     return false;
 }
 
-void RenderContext::Trace(const float*, const float*, const uint8_t*, float* out) {
-    RuntimeWarning("trace", "trace() returns black in this version");
-    std::fill(out, out + size_t(colorComponents_) * n_, 0.f);
+bool RenderContext::WorldRay(const float* P, const float* R, int i, V3f* org, V3f* dir) const {
+    worldFromCurrent_.multVecMatrix(ToV3(P, n_, i), *org);
+    worldFromCurrent_.multDirMatrix(ToV3(R, n_, i), *dir);
+    const float length = dir->length();
+    if (!(length > 0) || !std::isfinite(length)) return false;
+    *dir /= length;
+    return true;
+}
+
+// trace(P, R): the rays of the batch's active points go one depth deeper together; beyond
+// Option "trace" "maxdepth" they bring black. A point's neighbour points share its colour, and
+// their rays travel with it as its ray differentials.
+void RenderContext::Trace(const float* P, const float* R, const uint8_t* active, float* out) {
+    const int nc = colorComponents_;
+    std::fill(out, out + size_t(nc) * n_, 0.f);
+    if (depth_ + 1 > shaders_.TraceMaxDepth()) return;
+    const int main = MainCount();
+    auto isActive = [&](int i) { return !active || active[i]; };
+    TracedRays rays;
+    // Traced at the shutter's opening, as shadows are: points of a batch have no common time.
+    rays.time = shaders_.GetFrame().options.shutterOpen;
+    std::vector<int> traced;
+    for (int i = 0; i < main; ++i) {
+        V3f org, dir;
+        if (!isActive(i) || !WorldRay(P, R, i, &org, &dir)) continue;
+        // Leave the surface: an offset along the ray that grows with the coordinates' size, as
+        // float precision does.
+        const float tnear = 1e-4f * std::max(1.f, org.length());
+        rays.org.push_back(org), rays.dir.push_back(dir), rays.tnear.push_back(tnear);
+        traced.push_back(i);
+        if (batch_->randomSeeds.size() == size_t(n_))
+            rays.randomSeeds.push_back(sl::MixBits(batch_->randomSeeds[i] ^ uint64_t(depth_ + 1)));
+        if (!neighbours_) continue;
+        NeighbourRays differential;
+        for (int axis = 0; axis < 2; ++axis) {
+            const int j = (axis + 1) * main + i;
+            differential.org[axis] = org, differential.dir[axis] = dir;
+            if (isActive(j)) WorldRay(P, R, j, &differential.org[axis], &differential.dir[axis]);
+        }
+        differential.tnear = tnear;
+        differential.time = rays.time;
+        rays.neighbours.push_back(differential);
+    }
+    if (traced.empty()) return;
+    std::vector<float> colours(traced.size() * nc, 0.f);
+    tracer_.TraceRays(depth_ + 1, rays, colours.data());
+    for (size_t k = 0; k < traced.size(); ++k)
+        for (int c = 0; c < nc; ++c)
+            for (int copy = 0; copy < n_ / main; ++copy)
+                out[size_t(c) * n_ + copy * main + traced[k]] = colours[k * nc + c];
 }
 
 bool RenderContext::Attribute(const std::string& name, const sl::TypeSpec& type, int,
@@ -216,8 +328,14 @@ bool RenderContext::RendererInfo(const std::string& name, const sl::TypeSpec& ty
 }
 
 void RenderContext::RuntimeWarning(const std::string& key, const std::string& message) {
-    const FileLoc loc = shader_ ? shader_->loc : FileLoc{};
-    shaders_.GetDiagnostics().WarningOnce("runtime " + key, loc, message);
+    // At the shader statement, naming the RIB request that bound the shader.
+    const std::string& where = Statement();
+    const FileLoc request = shader_ ? shader_->loc : FileLoc{};
+    const FileLoc loc = where.empty() ? request : sl::StatementLoc(where, "");
+    const std::string bound = where.empty() || !shader_ ? std::string()
+                                                        : " (shader \"" + shader_->name + "\" of " +
+                                                              request.ToString() + ")";
+    shaders_.GetDiagnostics().WarningOnce("runtime " + where + key + message, loc, message + bound);
 }
 
 void RenderContext::Print(const std::string& text) {

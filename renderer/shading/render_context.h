@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/ray_scene.h"
+#include "shaderlang/message_passing.h"
 #include "shaderlang/shading_context.h"
 #include "shading/frame_shaders.h"
 #include "shading/surface_shading.h"
@@ -15,16 +16,66 @@ namespace gonio {
 
 class TextureLookup;
 
+// The rays that trace() follows from one batch, all of one depth, in world space.
+struct TracedRays {
+    std::vector<V3f> org, dir;  // dir unit length
+    std::vector<float> tnear;   // past the surface the ray leaves
+    // Empty, or per ray the rays that the shader traced at the point's neighbour points: the
+    // ray differentials of the traced ray.
+    std::vector<NeighbourRays> neighbours;
+    // Empty, or per ray a seed for the random() streams of the points it hits.
+    std::vector<uint64_t> randomSeeds;
+    float time = 0;
+};
+
+// Follows traced rays one level deeper: finds what they hit and shades it (shader_shading.cpp).
+class RayTracer {
+  public:
+    virtual ~RayTracer() = default;
+    // Writes ncomps floats per ray, ray-major: the colour arriving along each ray (black where
+    // it escapes).
+    virtual void TraceRays(int depth, const TracedRays& rays, float* colours) = 0;
+};
+
+// The neighbour points of a batch shaded with derivatives: the batch's first `mainCount`
+// points are its own, then come their neighbours one pixel along x, then those along y; the
+// tables are what UNeighbours, VNeighbours and NeighbourSteps return (shading_context.h).
+struct BatchNeighbours {
+    int mainCount = 0;
+    std::vector<int> u, v;
+    std::vector<float> steps;  // 4 × n
+};
+
 class RenderContext : public sl::ShadingContext {
   public:
+    // `depth`: the depth of the rays whose hits this context shades (0: camera rays).
     RenderContext(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
-                  TextureLookup& textures, sl::ShaderExecutor& lightExecutor);
+                  TextureLookup& textures, sl::ShaderExecutor& lightExecutor, RayTracer& tracer,
+                  int depth);
 
     // The batch about to be shaded: its points, their current-space positions (3 × n, for the
-    // light shaders' Ps) and the shader whose "shader" space applies.
-    void Begin(const ShadingBatch& batch, const float* currentP, const ShaderInstance* shader);
+    // light shaders' Ps) and the shader whose "shader" space applies. With `neighbours`, the
+    // lights and traced rays are computed for the main points only and shared with their
+    // neighbour points.
+    void Begin(const ShadingBatch& batch, const float* currentP, const ShaderInstance* shader,
+               const BatchNeighbours* neighbours = nullptr);
+
+    // Message passing: `executor` runs `instance`, the batch's shader of kind `source`, from
+    // now on (Begin forgets them). With `captureLights`, Lights() keeps each light's
+    // parameters for lightsource().
+    void SetMessageShader(sl::MessageSource source, const sl::ShaderInstance* instance,
+                          const sl::ShaderExecutor* executor) {
+        messageShaders_.Set(source, instance, executor);
+    }
+    void CaptureLightParameters(bool captureLights) { captureLights_ = captureLights; }
 
     bool CurrentFromSpace(const std::string& space, int point, Imath::M44f* m) const override;
+    bool ShaderParameter(sl::MessageSource source, const std::string& name,
+                         sl::MessageValue* value) const override {
+        return messageShaders_.Find(source, name, value);
+    }
+    bool TextureInfo(const std::string& name, const std::string& dataname,
+                     std::vector<float>* floats, std::string* text) override;
     const std::vector<sl::LightResult>& Lights() override;
     bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
                  const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
@@ -33,6 +84,7 @@ class RenderContext : public sl::ShadingContext {
                      const float* directions, const uint8_t* active, float* out) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
                 float* out) override;
+    std::string FindTexture(const std::string& name) const override;
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
     bool Attribute(const std::string& name, const sl::TypeSpec& type, int point,
                    std::vector<float>* floats, std::string* text) const override;
@@ -42,24 +94,45 @@ class RenderContext : public sl::ShadingContext {
                       std::string* text) const override;
     void RuntimeWarning(const std::string& key, const std::string& message) override;
     void Print(const std::string& text) override;
-    const int* UNeighbours() const override { return noNeighbours_.data(); }
-    const int* VNeighbours() const override { return noNeighbours_.data(); }
+    const int* UNeighbours() const override {
+        return neighbours_ ? neighbours_->u.data() : noNeighbours_.data();
+    }
+    const int* VNeighbours() const override {
+        return neighbours_ ? neighbours_->v.data() : noNeighbours_.data();
+    }
+    const float* NeighbourSteps() const override {
+        return neighbours_ ? neighbours_->steps.data() : nullptr;
+    }
 
   private:
     void TraceShadows(sl::LightResult* light) const;
+    // The points whose lights and traced rays are computed (the rest share them).
+    int MainCount() const { return neighbours_ ? neighbours_->mainCount : n_; }
+    // Copies the main points' values to their neighbour points in `planes` planes of n floats.
+    template <typename T>
+    void ShareWithNeighbours(std::vector<T>* values, int planes) const;
+    // The world-space ray from current-space P and R at point i; false if R is zero.
+    bool WorldRay(const float* P, const float* R, int i, V3f* org, V3f* dir) const;
 
     const FrameShaders& shaders_;
     const RayScene& scene_;
     const Camera& camera_;
     TextureLookup& textures_;
     sl::ShaderExecutor& lightExecutor_;
+    RayTracer& tracer_;
+    int depth_;
     const ShadingBatch* batch_ = nullptr;
     const float* currentP_ = nullptr;
+    const float* lightP_ = nullptr;  // P of the points the lights run for (3 × MainCount())
+    std::vector<float> mainP_;
+    const BatchNeighbours* neighbours_ = nullptr;
     const ShaderInstance* shader_ = nullptr;
     std::vector<sl::LightResult> lights_;
     bool lightsValid_ = false;
     std::vector<int> noNeighbours_;
     M44f worldFromCurrent_;
+    sl::MessageShaders messageShaders_;
+    bool captureLights_ = false;
 };
 
 }  // namespace gonio

@@ -1,20 +1,27 @@
 // The shading language in the render loop: a batch of points that share an attribute state is
 // laid out component-major in current (camera) space and run through its displacement, surface
-// and atmosphere shaders; the lights are run once per batch by the RenderContext.
+// and atmosphere shaders; the lights are run once per batch by the RenderContext. Shaders that
+// take derivatives run on each point's two neighbour points as well (neighbour_points.h), and
+// trace() shades what its rays hit one depth deeper, with one DepthShader per ray depth.
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
 
 #include "image/texture_lookup.h"
 #include "render/camera.h"
 #include "render/ray_scene.h"
 #include "shading/frame_shaders.h"
+#include "shading/neighbour_points.h"
 #include "shading/render_context.h"
 #include "shading/surface_shading.h"
 
 namespace gonio {
 namespace {
 
-constexpr int kMaxBatch = 256;  // points per interpreter run: registers stay in cache
+constexpr int kMaxBatch = 256;       // points per interpreter run: registers stay in cache
+constexpr int kMaxTraceLayers = 16;  // transparent surfaces a traced ray may pass through
 
 // Component-major planes for one batch (batch.h layout).
 struct Planes {
@@ -28,54 +35,144 @@ struct Planes {
     float* Plane(int component) { return data.data() + size_t(component) * n; }
 };
 
-class ShaderWorker : public ShadingWorker {
+int OutputFloats(const std::vector<ShaderOutput>& outputs) {
+    int total = 0;
+    for (const ShaderOutput& output : outputs) total += output.width;
+    return total;
+}
+
+// The shading state of one ray depth. trace() at depth d shades its hits at depth d + 1 while
+// depth d's registers, globals and points are still in use, so every depth has its own.
+class DepthShader {
   public:
-    ShaderWorker(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
-                 TextureLookup& textures, const SurfaceShading& fallback)
+    DepthShader(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
+                TextureLookup& textures, RayTracer& tracer, int depth, ShadingWorker& fallback)
         : shaders_(shaders),
           scene_(scene),
-          context_(shaders, scene, camera, textures, lightExecutor_),
-          fallback_(fallback.MakeWorker()),
+          context_(shaders, scene, camera, textures, lightExecutor_, tracer, depth),
+          fallback_(fallback),
           ncomps_(shaders.GetFrame().options.colorComponents) {}
 
-    void Shade(const ShadingBatch& batch, float* Ci, float* Oi) override;
+    void Shade(const ShadingBatch& batch, float* Ci, float* Oi);
+    // Where the hits of the traced rays shaded at this depth are kept (ShaderWorker::TraceRays).
+    std::vector<SurfacePoint>& HitPoints() { return hitPoints_; }
 
   private:
-    void ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk, float* Ci, float* Oi);
+    // Appends to `chunk` the neighbour points of its points (first those along x, then those
+    // along y) and fills the neighbour tables; `rays` are the chunk's neighbour rays.
+    void AddNeighbourPoints(ShadingBatch* chunk, const NeighbourRays* rays);
+    void ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk, int mainCount, float* Ci,
+                    float* Oi);
     void FillGlobals(const ShaderGroup& group, const ShadingBatch& chunk);
-    void CopyOut(const sl::ShaderExecutor& executor, const char* name, int n, float* pointMajor);
+    void CopyOut(const sl::ShaderExecutor& executor, const char* name, int count,
+                 float* pointMajor);
+    // The batch's AOVs: the surface shader's variable of each name (an output parameter, or a
+    // global it uses), else the global as the batch gave it.
+    void CopyOutputs(const ShadingBatch& chunk, int count);
+    sl::FloatArg GlobalPlanes(const std::string& name);
+    // Whether a shader of the group calls lightsource(): then the lights keep their parameters.
+    bool ReadsLightParameters(const ShaderGroup& group);
 
     const FrameShaders& shaders_;
     const RayScene& scene_;
-    sl::ShaderExecutor surfaceExecutor_, lightExecutor_, volumeExecutor_;
+    // One executor per shader kind: message passing reads the parameters that the displacement
+    // and surface shaders left in their registers while the next shader runs.
+    sl::ShaderExecutor displacementExecutor_, surfaceExecutor_, lightExecutor_, volumeExecutor_;
     RenderContext context_;
-    std::unique_ptr<ShadingWorker> fallback_;
+    ShadingWorker& fallback_;
     int ncomps_;
     sl::ShaderGlobals globals_;
     Planes P_, N_, Ng_, I_, dPdu_, dPdv_, u_, v_, s_, t_, Cs_, Os_, du_, dv_;
     std::vector<Planes> primvars_;
     std::vector<float> scratch_;
+    std::vector<SurfacePoint> neighbourPoints_, hitPoints_;
+    BatchNeighbours neighbours_;
+    std::vector<float> neighbourDu_, neighbourDv_;  // per main point
+    std::unordered_map<const ShaderGroup*, bool> readsLightParameters_;
 };
 
-void ShaderWorker::Shade(const ShadingBatch& batch, float* Ci, float* Oi) {
+void DepthShader::Shade(const ShadingBatch& batch, float* Ci, float* Oi) {
     const ShaderGroup* group = shaders_.Group(batch.attributes);
     if (!group || !group->surface) {
-        fallback_->Shade(batch, Ci, Oi);
+        fallback_.Shade(batch, Ci, Oi);
         return;
     }
     const int count = static_cast<int>(batch.points.size());
-    for (int first = 0; first < count; first += kMaxBatch) {
-        const int last = std::min(count, first + kMaxBatch);
+    const bool withNeighbours =
+        shaders_.WantsNeighbours(*group) && batch.neighbourRays.size() == size_t(count);
+    // With neighbours a chunk holds three points per point of the batch.
+    const int chunkSize = withNeighbours ? kMaxBatch / 3 : kMaxBatch;
+    for (int first = 0; first < count; first += chunkSize) {
+        const int last = std::min(count, first + chunkSize);
         ShadingBatch chunk;
         chunk.attributes = batch.attributes;
         chunk.points.assign(batch.points.begin() + first, batch.points.begin() + last);
         chunk.incident.assign(batch.incident.begin() + first, batch.incident.begin() + last);
         chunk.depth.assign(batch.depth.begin() + first, batch.depth.begin() + last);
-        ShadeChunk(*group, chunk, Ci + size_t(first) * ncomps_, Oi + size_t(first) * ncomps_);
+        if (batch.randomSeeds.size() == size_t(count))
+            chunk.randomSeeds.assign(batch.randomSeeds.begin() + first,
+                                     batch.randomSeeds.begin() + last);
+        if (batch.outputs && batch.outputValues) {
+            chunk.outputs = batch.outputs;
+            chunk.outputValues = batch.outputValues + size_t(first) * OutputFloats(*batch.outputs);
+        }
+        if (withNeighbours) AddNeighbourPoints(&chunk, batch.neighbourRays.data() + first);
+        ShadeChunk(*group, chunk, last - first, Ci + size_t(first) * ncomps_,
+                   Oi + size_t(first) * ncomps_);
     }
 }
 
-void ShaderWorker::FillGlobals(const ShaderGroup& group, const ShadingBatch& chunk) {
+void DepthShader::AddNeighbourPoints(ShadingBatch* chunk, const NeighbourRays* rays) {
+    const int m = static_cast<int>(chunk->points.size()), n = 3 * m;
+    if (neighbourPoints_.size() < size_t(2 * m)) neighbourPoints_.resize(2 * m);
+    for (int axis = 0; axis < 2; ++axis) {
+        for (int i = 0; i < m; ++i) {
+            const SurfacePoint& centre = *chunk->points[i];
+            const V3f& I = chunk->incident[i];
+            SurfacePoint* neighbour = &neighbourPoints_[axis * m + i];
+            V3f incident;
+            FindNeighbourPoint(scene_, centre, centre.P - I, I, rays[i].org[axis],
+                               rays[i].dir[axis], rays[i].tnear, rays[i].time, neighbour,
+                               &incident);
+            chunk->points.push_back(neighbour);
+            chunk->incident.push_back(incident);
+            chunk->depth.push_back(chunk->depth[i]);
+            // A neighbour point draws its own random numbers, but the same ones every render.
+            if (chunk->randomSeeds.size() > size_t(i))
+                chunk->randomSeeds.push_back(sl::MixBits(chunk->randomSeeds[i] + axis + 1));
+        }
+    }
+    // Point i's neighbours are m+i (along x) and 2m+i (along y). The neighbours get two
+    // independent steps of their own, so that their derivatives (a texture footprint, a
+    // derivative of a derivative) are defined too: m+i steps back to i (MakeStencil's backward
+    // difference) and on to 2m+i; 2m+i steps to i, and back to m+i.
+    BatchNeighbours& nb = neighbours_;
+    nb.mainCount = m;
+    nb.u.assign(n, -1);
+    nb.v.assign(n, -1);
+    nb.steps.assign(4 * size_t(n), 0.f);
+    auto setStep = [&](int point, int direction, const Imath::V2f& step) {
+        nb.steps[size_t(2 * direction) * n + point] = step.x;
+        nb.steps[size_t(2 * direction + 1) * n + point] = step.y;
+    };
+    neighbourDu_.resize(m), neighbourDv_.resize(m);
+    for (int i = 0; i < m; ++i) {
+        const SurfacePoint& centre = *chunk->points[i];
+        const Imath::V2f x = ParametricStep(centre, chunk->points[m + i]->P - centre.P);
+        const Imath::V2f y = ParametricStep(centre, chunk->points[2 * m + i]->P - centre.P);
+        nb.u[i] = m + i, nb.v[i] = 2 * m + i;
+        nb.v[m + i] = 2 * m + i;
+        nb.u[2 * m + i] = i;
+        setStep(i, 0, x), setStep(i, 1, y);
+        setStep(m + i, 1, y - x);
+        setStep(2 * m + i, 0, -y);
+        // du, dv: the extent in u and v of the pixel's footprint.
+        neighbourDu_[i] = std::fabs(x.x) + std::fabs(y.x);
+        neighbourDv_[i] = std::fabs(x.y) + std::fabs(y.y);
+    }
+}
+
+void DepthShader::FillGlobals(const ShaderGroup& group, const ShadingBatch& chunk) {
     const int n = static_cast<int>(chunk.points.size());
     const M44f& currentFromWorld = shaders_.CurrentFromWorld();
     const M44f normalFromWorld = currentFromWorld.inverse().transposed();
@@ -125,44 +222,224 @@ void ShaderWorker::FillGlobals(const ShaderGroup& group, const ShadingBatch& chu
     }
 }
 
-void ShaderWorker::CopyOut(const sl::ShaderExecutor& executor, const char* name, int n,
-                           float* pointMajor) {
+void DepthShader::CopyOut(const sl::ShaderExecutor& executor, const char* name, int count,
+                          float* pointMajor) {
     const sl::FloatArg out = executor.Output(name);
     if (!out.data) return;
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < count; ++i)
         for (int c = 0; c < ncomps_; ++c) pointMajor[i * ncomps_ + c] = out.At(c, i);
 }
 
-void ShaderWorker::ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk, float* Ci,
-                              float* Oi) {
-    const int n = static_cast<int>(chunk.points.size());
-    FillGlobals(group, chunk);
-    context_.Begin(chunk, globals_.P, group.surfaceRequest);
+sl::FloatArg DepthShader::GlobalPlanes(const std::string& name) {
+    const std::pair<const char*, Planes*> globals[] = {
+        {"P", &P_},       {"N", &N_},   {"Ng", &Ng_}, {"I", &I_},  {"dPdu", &dPdu_},
+        {"dPdv", &dPdv_}, {"u", &u_},   {"v", &v_},   {"s", &s_},  {"t", &t_},
+        {"du", &du_},     {"dv", &dv_}, {"Cs", &Cs_}, {"Os", &Os_}};
+    for (const auto& [globalName, planes] : globals) {
+        if (name != globalName || planes->n == 0) continue;
+        return sl::FloatArg{planes->data.data(), int(planes->data.size()) / planes->n, true,
+                            planes->n};
+    }
+    return sl::FloatArg{};
+}
 
-    if (group.displacement && volumeExecutor_.Run(*group.displacement, globals_, context_)) {
+void DepthShader::CopyOutputs(const ShadingBatch& chunk, int count) {
+    const int total = OutputFloats(*chunk.outputs);
+    int offset = 0;
+    for (const ShaderOutput& output : *chunk.outputs) {
+        sl::FloatArg value = surfaceExecutor_.Output(output.name);
+        if (!value.data) value = GlobalPlanes(output.name);
+        const int width = std::min(output.width, value.width);
+        for (int i = 0; i < count && value.data; ++i)
+            for (int c = 0; c < width; ++c)
+                chunk.outputValues[size_t(i) * total + offset + c] = value.At(c, i);
+        offset += output.width;
+    }
+}
+
+bool DepthShader::ReadsLightParameters(const ShaderGroup& group) {
+    auto [it, isNew] = readsLightParameters_.try_emplace(&group, false);
+    if (isNew) {
+        for (const auto* instance : {&group.displacement, &group.surface, &group.atmosphere})
+            if (*instance && sl::CallsBuiltin(**instance, "lightsource")) it->second = true;
+    }
+    return it->second;
+}
+
+void DepthShader::ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk, int mainCount,
+                             float* Ci, float* Oi) {
+    const int n = static_cast<int>(chunk.points.size());
+    const bool withNeighbours = n > mainCount;
+    FillGlobals(group, chunk);
+    if (withNeighbours) {
+        for (int i = 0; i < n; ++i) {
+            du_.data[i] = neighbourDu_[i % mainCount];
+            dv_.data[i] = neighbourDv_[i % mainCount];
+        }
+    }
+    context_.Begin(chunk, globals_.P, group.surfaceRequest,
+                   withNeighbours ? &neighbours_ : nullptr);
+    context_.CaptureLightParameters(ReadsLightParameters(group));
+
+    context_.SetMessageShader(sl::MessageSource::Displacement, group.displacement.get(),
+                              &displacementExecutor_);
+    if (group.displacement && displacementExecutor_.Run(*group.displacement, globals_, context_)) {
         // A ray tracer keeps the geometry: displacement changes the shading normal only.
-        const sl::FloatArg N = volumeExecutor_.Output("N");
+        const sl::FloatArg N = displacementExecutor_.Output("N");
         if (N.data)
             for (int i = 0; i < n; ++i) N_.Set(i, V3f(N.At(0, i), N.At(1, i), N.At(2, i)));
     }
+    context_.SetMessageShader(sl::MessageSource::Surface, group.surface.get(), &surfaceExecutor_);
     surfaceExecutor_.Run(*group.surface, globals_, context_);
-    CopyOut(surfaceExecutor_, "Ci", n, Ci);
-    CopyOut(surfaceExecutor_, "Oi", n, Oi);
+    CopyOut(surfaceExecutor_, "Ci", mainCount, Ci);
+    CopyOut(surfaceExecutor_, "Oi", mainCount, Oi);
+    if (chunk.outputs && chunk.outputValues) CopyOutputs(chunk, mainCount);
 
     if (group.atmosphere) {
         // The atmosphere shader sees the surface's result as its input Ci, Oi.
         scratch_.assign(size_t(2) * ncomps_ * n, 0.f);
         float* ci = scratch_.data();
         float* oi = ci + size_t(ncomps_) * n;
+        const sl::FloatArg surfaceCi = surfaceExecutor_.Output("Ci");
+        const sl::FloatArg surfaceOi = surfaceExecutor_.Output("Oi");
         for (int i = 0; i < n; ++i)
             for (int c = 0; c < ncomps_; ++c) {
-                ci[size_t(c) * n + i] = Ci[i * ncomps_ + c];
-                oi[size_t(c) * n + i] = Oi[i * ncomps_ + c];
+                if (surfaceCi.data) ci[size_t(c) * n + i] = surfaceCi.At(c, i);
+                if (surfaceOi.data) oi[size_t(c) * n + i] = surfaceOi.At(c, i);
             }
         globals_.Ci = ci, globals_.Oi = oi;
+        context_.SetMessageShader(sl::MessageSource::Atmosphere, group.atmosphere.get(),
+                                  &volumeExecutor_);
         if (volumeExecutor_.Run(*group.atmosphere, globals_, context_)) {
-            CopyOut(volumeExecutor_, "Ci", n, Ci);
-            CopyOut(volumeExecutor_, "Oi", n, Oi);
+            CopyOut(volumeExecutor_, "Ci", mainCount, Ci);
+            CopyOut(volumeExecutor_, "Oi", mainCount, Oi);
+        }
+    }
+}
+
+// The next hit along a traced ray past *tnear that faces the ray (or is two-sided), as camera
+// rays find theirs; *tnear moves past it.
+bool NextHit(const RayScene& scene, const V3f& org, const V3f& dir, float time, float* tnear,
+             SurfacePoint* sp, float* t) {
+    while (true) {
+        RayHit hit;
+        if (!scene.Intersect(org, dir, *tnear, std::numeric_limits<float>::infinity(), time, &hit))
+            return false;
+        *tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
+        scene.Evaluate(org, dir, hit, sp);
+        *t = hit.t;
+        if (sp->attributes->twoSided || sp->Ng.dot(dir) <= 0) return true;
+    }
+}
+
+class ShaderWorker : public ShadingWorker, public RayTracer {
+  public:
+    ShaderWorker(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
+                 TextureLookup& textures, const SurfaceShading& fallback)
+        : shaders_(shaders),
+          scene_(scene),
+          camera_(camera),
+          textures_(textures),
+          fallback_(fallback.MakeWorker()),
+          ncomps_(shaders.GetFrame().options.colorComponents) {}
+
+    void Shade(const ShadingBatch& batch, float* Ci, float* Oi) override {
+        AtDepth(0).Shade(batch, Ci, Oi);
+    }
+    bool WantsNeighbourRays(const Attributes* attributes) const override {
+        const ShaderGroup* group = shaders_.Group(attributes);
+        return group && group->surface && shaders_.WantsNeighbours(*group);
+    }
+    void TraceRays(int depth, const TracedRays& rays, float* colours) override;
+
+  private:
+    DepthShader& AtDepth(int depth) {
+        while (int(depths_.size()) <= depth)
+            depths_.push_back(std::make_unique<DepthShader>(
+                shaders_, scene_, camera_, textures_, *this, int(depths_.size()), *fallback_));
+        return *depths_[depth];
+    }
+
+    const FrameShaders& shaders_;
+    const RayScene& scene_;
+    const Camera& camera_;
+    TextureLookup& textures_;
+    std::unique_ptr<ShadingWorker> fallback_;
+    int ncomps_;
+    std::vector<std::unique_ptr<DepthShader>> depths_;
+};
+
+// Like the camera rays of a tile: each ray's hits are shaded layer by layer, the hits of one
+// layer in batches that share attributes (in order of first appearance, so that the result
+// does not depend on threads), and composited front to back through transparent surfaces.
+void ShaderWorker::TraceRays(int depth, const TracedRays& rays, float* colours) {
+    DepthShader& shader = AtDepth(depth);
+    const int count = static_cast<int>(rays.org.size()), nc = ncomps_;
+    const bool haveNeighbours = rays.neighbours.size() == size_t(count);
+    std::fill(colours, colours + size_t(count) * nc, 0.f);
+    std::vector<float> transmittance(size_t(count) * nc, 1.f), tnear = rays.tnear;
+    std::vector<uint8_t> alive(count, 1);
+    std::vector<SurfacePoint>& points = shader.HitPoints();
+    if (points.size() < size_t(count)) points.resize(count);
+    std::vector<int> hitRays;
+    std::vector<float> hitT, hitTnear, Ci, Oi;
+    for (int layer = 0; layer < kMaxTraceLayers; ++layer) {
+        hitRays.clear(), hitT.clear(), hitTnear.clear();
+        for (int r = 0; r < count; ++r) {
+            if (!alive[r]) continue;
+            const float start = tnear[r];
+            float t;
+            if (!NextHit(scene_, rays.org[r], rays.dir[r], rays.time, &tnear[r],
+                         &points[hitRays.size()], &t)) {
+                alive[r] = 0;
+                continue;
+            }
+            hitRays.push_back(r), hitT.push_back(t), hitTnear.push_back(start);
+        }
+        if (hitRays.empty()) break;
+        std::vector<const Attributes*> order;
+        std::unordered_map<const Attributes*, std::vector<int>> members;
+        for (int k = 0; k < int(hitRays.size()); ++k) {
+            auto [it, isNew] = members.try_emplace(points[k].attributes);
+            if (isNew) order.push_back(points[k].attributes);
+            it->second.push_back(k);
+        }
+        for (const Attributes* attributes : order) {
+            const std::vector<int>& batchMembers = members[attributes];
+            ShadingBatch batch;
+            batch.attributes = attributes;
+            const bool neighbours =
+                haveNeighbours && !attributes->matte && WantsNeighbourRays(attributes);
+            for (int k : batchMembers) {
+                const int r = hitRays[k];
+                batch.points.push_back(&points[k]);
+                batch.incident.push_back(rays.dir[r] * hitT[k]);
+                V3f current;
+                shaders_.CurrentFromWorld().multVecMatrix(points[k].P, current);
+                batch.depth.push_back(current.z);
+                if (rays.randomSeeds.size() == size_t(count))
+                    batch.randomSeeds.push_back(sl::MixBits(rays.randomSeeds[r] + layer));
+                if (!neighbours) continue;
+                batch.neighbourRays.push_back(rays.neighbours[r]);
+                batch.neighbourRays.back().tnear = hitTnear[k];
+            }
+            Ci.assign(batchMembers.size() * nc, 0.f);
+            Oi.assign(batchMembers.size() * nc, 0.f);
+            if (!attributes->matte) shader.Shade(batch, Ci.data(), Oi.data());
+            for (size_t j = 0; j < batchMembers.size(); ++j) {
+                const int r = hitRays[batchMembers[j]];
+                // A matte object hides what lies behind it and adds nothing (RISpec §4.2.5).
+                const float* opacity =
+                    attributes->matte ? points[batchMembers[j]].Os.data() : &Oi[j * nc];
+                float remaining = 0;
+                for (int c = 0; c < nc; ++c) {
+                    float& T = transmittance[size_t(r) * nc + c];
+                    if (!attributes->matte) colours[size_t(r) * nc + c] += T * Ci[j * nc + c];
+                    T *= 1 - std::clamp(opacity[c], 0.f, 1.f);
+                    remaining = std::max(remaining, T);
+                }
+                if (remaining < 1e-4f) alive[r] = 0;
+            }
         }
     }
 }
@@ -178,6 +455,36 @@ class ShaderShading : public SurfaceShading {
 
     std::unique_ptr<ShadingWorker> MakeWorker() const override {
         return std::make_unique<ShaderWorker>(shaders_, scene_, camera_, textures_, *fallback_);
+    }
+
+    // A global, or a non-string parameter of a surface shader of the frame (the first found).
+    bool DescribeOutput(ShaderOutput* output) const override {
+        const int ncomps = shaders_.GetFrame().options.colorComponents;
+        struct Global {
+            const char* name;
+            int width;  // 0: a colour
+        };
+        static const Global kGlobals[] = {{"P", 3},    {"N", 3},    {"Ng", 3}, {"I", 3},
+                                          {"dPdu", 3}, {"dPdv", 3}, {"u", 1},  {"v", 1},
+                                          {"s", 1},    {"t", 1},    {"du", 1}, {"dv", 1},
+                                          {"Cs", 0},   {"Os", 0},   {"Ci", 0}, {"Oi", 0}};
+        for (const Global& global : kGlobals) {
+            if (output->name != global.name) continue;
+            output->isColor = global.width == 0;
+            output->width = output->isColor ? ncomps : global.width;
+            return true;
+        }
+        for (const SceneShape& shape : shaders_.GetFrame().shapes) {
+            const ShaderGroup* group = shaders_.Group(shape.attributes.get());
+            const sl::ShaderParam* param = group && group->surface
+                                               ? group->surface->Master().FindParam(output->name)
+                                               : nullptr;
+            if (!param || param->type.base == sl::BaseType::String) continue;
+            output->width = param->type.Width(ncomps) * std::max(1, param->type.arrayLength);
+            output->isColor = param->type.base == sl::BaseType::Color;
+            return true;
+        }
+        return false;
     }
 
   private:

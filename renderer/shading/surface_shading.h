@@ -5,18 +5,46 @@
 
 #include <Imath/ImathVec.h>
 
+#include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "render/surface_point.h"
 
 namespace gonio {
 
+// The rays one pixel away from a point's ray along raster x and y (ray differentials as whole
+// rays), in world space. Shaders that take derivatives (Du, area, texture footprints, ...) are
+// run on the points these rays hit too, as the neighbours of the point (shader_shading.cpp).
+struct NeighbourRays {
+    Imath::V3f org[2], dir[2];
+    float tnear = 0;  // where the point's own ray started looking (past transparent layers)
+    float time = 0;
+};
+
+// An arbitrary output variable (AOV): a Display whose mode names a shader variable, an output
+// parameter of the surface shader or a global ("N", "Cs", "Oi", ...), with its floats per point.
+struct ShaderOutput {
+    std::string name;
+    int width = 1;
+    bool isColor = false;  // channels name.r, name.g, ... rather than name.x, name.y, ...
+};
+
 struct ShadingBatch {
     const Attributes* attributes = nullptr;
     std::vector<const SurfacePoint*> points;
-    std::vector<Imath::V3f> incident;  // I: from the eye to each point (world space)
+    std::vector<Imath::V3f> incident;  // I: from the ray's origin (the eye) to each point (world)
     std::vector<float> depth;          // camera-space z of each point
+    // Empty, or one per point when the worker WantsNeighbourRays for these attributes.
+    std::vector<NeighbourRays> neighbourRays;
+    // Empty, or one per point: the seed of the point's random() stream, from its pixel, sample
+    // and the render's seed, so that random() does not depend on threads.
+    std::vector<uint64_t> randomSeeds;
+    // The AOVs wanted (null: none) and where they go: per point the sum of their widths in
+    // floats, point-major, in the order of `outputs`. A point whose shader lacks one keeps 0.
+    const std::vector<ShaderOutput>* outputs = nullptr;
+    float* outputValues = nullptr;
 };
 
 // Per-thread shading state (shader registers, light caches); not shared between threads.
@@ -26,12 +54,18 @@ class ShadingWorker {
     // Writes ncomps floats of Ci and of Oi per point, point-major: Ci[i * ncomps + c]. Ci is
     // premultiplied by Oi, as RenderMan surface shaders leave it.
     virtual void Shade(const ShadingBatch& batch, float* Ci, float* Oi) = 0;
+    // Whether Shade wants ShadingBatch::neighbourRays for points with these attributes (their
+    // shaders take derivatives, or trace rays to surfaces that do).
+    virtual bool WantsNeighbourRays(const Attributes*) const { return false; }
 };
 
 class SurfaceShading {
   public:
     virtual ~SurfaceShading() = default;
     virtual std::unique_ptr<ShadingWorker> MakeWorker() const = 0;
+    // Fills the width and kind of the AOV output->name; false when no shader of the frame has
+    // it.
+    virtual bool DescribeOutput(ShaderOutput*) const { return false; }
 };
 
 // The default surface of primitives without a Surface shader: a squared facing ratio,

@@ -77,6 +77,21 @@ int CodeGenerator::StringConstant(const std::string& text) {
     return r;
 }
 
+// Kernels flagged kReadsGlobals read globals the shader need not name (texture() without
+// coordinates reads s and t, the derivative kernels du and dv): they must have registers. du and
+// dv only for kernels that take derivatives: the renderer shades neighbour points for shaders
+// that read them. Ng is left out on purpose: faceforward(N, I) then falls back to N as its
+// reference, which the conformance scenes need while the renderer's Ng can disagree with
+// user-supplied N (Bugs_BugThreeLights goes black with Ng as reference).
+void CodeGenerator::ImplicitGlobals(unsigned flags) {
+    std::vector<const char*> names = {"s", "t"};
+    if (flags & kNeedsDerivatives) names.insert(names.end(), {"du", "dv"});
+    for (const char* name : names) {
+        const int id = FindGlobal(name, checker_.Type());
+        if (id >= 0) GlobalReg(id);
+    }
+}
+
 int CodeGenerator::GlobalReg(int id) {
     if (p_->globals[id] >= 0) return p_->globals[id];
     const GlobalVarInfo& g = GlobalVar(id);
@@ -607,6 +622,7 @@ int CodeGenerator::Cast(Node* e) {
 
 int CodeGenerator::BuiltinCall(Node* e) {
     const BuiltinInfo& info = BuiltinTable()[e->builtin];
+    if (info.flags & kReadsGlobals) ImplicitGlobals(info.flags);
     std::vector<int> args;
     struct WriteBack {
         int array, index, temp;

@@ -40,6 +40,7 @@ class CodeGenerator {
     int Constant(const std::vector<float>& values, const TypeSpec& type);
     int StringConstant(const std::string& text);
     int GlobalReg(int id);
+    void ImplicitGlobals(unsigned flags);
     int Emit(Op op, std::initializer_list<int> args, int extra = 0, int jump = -1);
     void SetLoc(const Node* n);
     int PushRegion(int condition, bool alwaysVarying);

@@ -12,8 +12,8 @@ namespace gonio::sl {
 
 namespace {
 
-constexpr unsigned kRunTimeOnly =
-    kVaryingResult | kReadsGlobals | kUsesLights | kHasSideEffects | kNeedsDerivatives;
+constexpr unsigned kRunTimeOnly = kVaryingResult | kReadsGlobals | kUsesLights | kHasSideEffects |
+                                  kNeedsDerivatives | kReadsFiles;
 
 bool HasJumpTarget(Op op) {
     return op == Op::Jump || op == Op::If || op == Op::Else || op == Op::LoopTest ||

@@ -377,6 +377,10 @@ primary
     | STRINGLIT { $$ = Name(state, NodeKind::String, @1, $1); }
     | IDENT { $$ = Name(state, NodeKind::Identifier, @1, $1); }
     | IDENT '(' args ')' { $$ = $3; $$->name = std::move(*$1); delete $1; $$->loc = @1; }
+    /* Message passing (RISpec §15.8): surface() and displacement() share their names with
+       shader types. */
+    | SURFACE '(' args ')' { $$ = $3; $$->name = "surface"; $$->loc = @1; }
+    | DISPLACEMENT '(' args ')' { $$ = $3; $$->name = "displacement"; $$->loc = @1; }
     | primary '[' expr ']' { $$ = Make(state, NodeKind::Index, @2, {$1, $3}); }
     | '(' expr ')' { $$ = $2; }
     | '(' expr ',' arg_list ')' {

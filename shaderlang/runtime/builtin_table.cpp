@@ -20,6 +20,7 @@ builtins::BuiltinList MakeTable() {
     builtins::AddTextureBuiltins(&list);
     builtins::AddMessageBuiltins(&list);
     builtins::AddDerivativeBuiltins(&list);
+    builtins::AddBrdfBuiltins(&list);
     return list;
 }
 

@@ -21,6 +21,7 @@ enum BuiltinFlags : unsigned {
     kUsesLights = 1u << 2,        // ambient, diffuse, specular, phong: runs the light shaders
     kHasSideEffects = 1u << 3,    // printf: never removed as dead code, never folded
     kNeedsDerivatives = 1u << 4,  // Du, Dv, Deriv, area, calculatenormal
+    kReadsFiles = 1u << 5,        // brdf: reads files through the renderer, so runs only then
 };
 
 struct BuiltinInfo {

@@ -1,11 +1,14 @@
 // Derivative built-ins (RISpec §15.1-15.2): Du, Dv, Deriv, area, calculatenormal, as finite
 // differences over the neighbouring points of the batch that the ShadingContext names
-// (UNeighbours/VNeighbours). A point with no neighbour along u uses the point whose neighbour it
-// is (a backward difference); with neither, the difference is 0. Du and Dv divide by the
-// globals du and dv; Deriv, area and calculatenormal need no step size, the steps cancel.
+// (UNeighbours/VNeighbours). A point with no neighbour in a direction uses the point whose
+// neighbour it is (a backward difference); with neither, the difference is 0. Du and Dv turn
+// the two differences into parametric derivatives (PartialSolver); area and calculatenormal
+// use the differences themselves: the surface element that the two neighbours span (a grid
+// cell, or a pixel's footprint in a render).
 
 #include "shaderlang/runtime/builtins_derivatives.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -40,6 +43,37 @@ Stencil VStencil(const BuiltinCall& call) {
     return MakeStencil(call, call.context ? call.context->VNeighbours() : nullptr);
 }
 
+PartialSolver::PartialSolver(const BuiltinCall& call)
+    : call_(call),
+      u_(UStencil(call)),
+      v_(VStencil(call)),
+      steps_(call.context ? call.context->NeighbourSteps() : nullptr) {
+    if (call.globals) du_ = call.globals->Get("du"), dv_ = call.globals->Get("dv");
+}
+
+void PartialSolver::Solve(const FloatArg& a, int c, int p, bool unitSteps, float* alongU,
+                          float* alongV) const {
+    *alongU = *alongV = 0.0f;
+    const float changeU = Delta(u_, a, c, p), changeV = Delta(v_, a, c, p);
+    if (!steps_) {
+        const float hu = unitSteps ? 1.0f : du_.data ? du_.At(0, p) : 0.0f;
+        const float hv = unitSteps ? 1.0f : dv_.data ? dv_.At(0, p) : 0.0f;
+        if (hu != 0.0f) *alongU = changeU / hu;
+        if (hv != 0.0f) *alongV = changeV / hv;
+        return;
+    }
+    if (u_.from[p] < 0 || v_.from[p] < 0) return;
+    // Each stencil's step is that of its `from` point (forward, or backward at an edge):
+    // changeU = x_u·au + x_v·av and changeV = x_u·bu + x_v·bv (Cramer's rule).
+    const int n = call_.n;
+    const float au = steps_[u_.from[p]], av = steps_[n + u_.from[p]];
+    const float bu = steps_[2 * n + v_.from[p]], bv = steps_[3 * n + v_.from[p]];
+    const float det = au * bv - av * bu;
+    if (std::fabs(det) <= 1e-6f * (std::fabs(au * bv) + std::fabs(av * bu))) return;
+    *alongU = (changeU * bv - changeV * av) / det;
+    *alongV = (changeV * au - changeU * bu) / det;
+}
+
 namespace {
 
 V3 DeltaTriple(const Stencil& s, const FloatArg& a, int p) {
@@ -50,30 +84,36 @@ FloatArg Global(const BuiltinCall& call, const char* name) {
     return call.globals ? call.globals->Get(name) : FloatArg{};
 }
 
-// Du(x) / Dv(x): the difference across one grid step divided by the step du (dv).
+// Du(x) / Dv(x): the parametric derivative along u (v).
 template <bool AlongU>
 void PartialKernel(const BuiltinCall& call) {
-    const Stencil s = AlongU ? UStencil(call) : VStencil(call);
-    const FloatArg step = Global(call, AlongU ? "du" : "dv");
+    const PartialSolver solver(call);
     const int w = call.result.width;
     ForEachPoint(call, [&](int p) {
-        float h = step.data ? step.At(0, p) : 0.0f;
         for (int c = 0; c < w; ++c) {
-            call.result.At(c, p) = h != 0.0f ? Delta(s, call.args[0], c, p) / h : 0.0f;
+            float alongU, alongV;
+            solver.Solve(call.args[0], c, p, false, &alongU, &alongV);
+            call.result.At(c, p) = AlongU ? alongU : alongV;
         }
     });
 }
 
-// Deriv(num, den) = Du(num)/Du(den) + Dv(num)/Dv(den); each term is 0 where den does not change.
+// Deriv(num, den) = Du(num)/Du(den) + Dv(num)/Dv(den) (RISpec §15.1); each term is 0 where den
+// does not change. On a grid the steps du and dv cancel. Solved derivatives are not exactly 0
+// where den does not change, so a term counts only where den changes along it by more than
+// 1e-3 of its larger change.
 void DerivKernel(const BuiltinCall& call) {
-    const Stencil su = UStencil(call), sv = VStencil(call);
+    const PartialSolver solver(call);
     const int w = call.result.width;
     ForEachPoint(call, [&](int p) {
-        float du = Delta(su, call.args[1], 0, p), dv = Delta(sv, call.args[1], 0, p);
+        float denU, denV;
+        solver.Solve(call.args[1], 0, p, true, &denU, &denV);
+        const float least = 1e-3f * std::max(std::fabs(denU), std::fabs(denV));
         for (int c = 0; c < w; ++c) {
-            float value = 0.0f;
-            if (du != 0.0f) value += Delta(su, call.args[0], c, p) / du;
-            if (dv != 0.0f) value += Delta(sv, call.args[0], c, p) / dv;
+            float numU, numV, value = 0.0f;
+            solver.Solve(call.args[0], c, p, true, &numU, &numV);
+            if (std::fabs(denU) > least) value += numU / denU;
+            if (std::fabs(denV) > least) value += numV / denV;
             call.result.At(c, p) = value;
         }
     });
@@ -88,15 +128,23 @@ void AreaKernel(const BuiltinCall& call) {
     });
 }
 
-// calculatenormal(P): the unit normal Du(P) ^ Dv(P), turned to the side of Ng (when the
-// shader has Ng), so that a bump shader's new N faces as the surface's did whatever the
-// handedness of the parametrisation.
+// calculatenormal(P): the unit normal Du(P) ^ Dv(P), turned to the side of Ng (or of N when
+// the shader has no Ng), so that a bump shader's new N faces as the surface's did whatever the
+// handedness of the parametrisation. Where Du(P) and Dv(P) are not determined (no parametric
+// steps), the cross product of the two differences stands in for them.
 void CalculateNormalKernel(const BuiltinCall& call) {
+    const PartialSolver solver(call);
     const Stencil su = UStencil(call), sv = VStencil(call);
-    const FloatArg ng = Global(call, "Ng");
+    FloatArg side = Global(call, "Ng");
+    if (!side.data) side = Global(call, "N");
     ForEachPoint(call, [&](int p) {
-        V3 n = Normalized(DeltaTriple(su, call.args[0], p).cross(DeltaTriple(sv, call.args[0], p)));
-        if (ng.data && Dot(n, Triple(ng, p)) < 0.0f) n = -n;
+        V3 alongU, alongV;
+        for (int c = 0; c < 3; ++c) solver.Solve(call.args[0], c, p, true, &alongU[c], &alongV[c]);
+        V3 n = Normalized(alongU.cross(alongV));
+        if (n.length2() == 0.0f)
+            n = Normalized(
+                DeltaTriple(su, call.args[0], p).cross(DeltaTriple(sv, call.args[0], p)));
+        if (side.data && Dot(n, Triple(side, p)) < 0.0f) n = -n;
         SetTriple(call.result, p, n);
     });
 }

@@ -22,52 +22,79 @@ namespace gonio::sl::builtins {
 
 namespace {
 
-V3 LightDirection(const LightResult& light, int n, int p) {
-    return Normalized(V3(light.L[p], light.L[n + p], light.L[2 * n + p]));
+// Reads the triples (or floats) of an argument without a varying test per access: a uniform
+// argument has step 0. The lighting kernels run per light and per point, so their accessors
+// are the inner loop of every lit shader.
+struct TripleReader {
+    const float *x, *y, *z;
+    int step;
+    explicit TripleReader(const FloatArg& a)
+        : x(a.data),
+          y(a.data + (a.varying ? a.n : 1)),
+          z(a.data + (a.varying ? 2 * a.n : 2)),
+          step(a.varying ? 1 : 0) {}
+    V3 operator()(int p) const { return V3(x[p * step], y[p * step], z[p * step]); }
+};
+
+struct FloatReader {
+    const float* data;
+    int step;
+    explicit FloatReader(const FloatArg& a) : data(a.data), step(a.varying ? 1 : 0) {}
+    float operator()(int p) const { return data[p * step]; }
+};
+
+void ClearResult(const BuiltinCall& call) {
+    if (call.result.varying && !call.active) {
+        std::fill_n(call.result.data, size_t(call.result.width) * call.n, 0.0f);
+        return;
+    }
+    ForEachPoint(call, [&](int p) {
+        for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = 0.0f;
+    });
 }
 
-// Whether a non-ambient light reaches point p within the hemisphere around N.
-bool LitInHemisphere(const LightResult& light, int p, const V3& ln, const V3& normal) {
-    if (light.ambient) return false;
-    if (!light.lit.empty() && !light.lit[p]) return false;
-    return Dot(ln, normal) >= 0.0f;
+// max(0, N·H)^(kSpecularExponentScale / roughness), H = normalize(ln + view); inlined into the
+// specular() loop.
+inline float SpecularLobe(const V3& ln, const V3& normal, const V3& view, float roughness) {
+    V3 h = Normalized(ln + view);
+    return std::pow(std::max(0.0f, Dot(normal, h)), kSpecularExponentScale / roughness);
 }
 
-void ClearResult(const BuiltinCall& call, int p) {
-    for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = 0.0f;
-}
-
-// Adds weight · Cl of `light` at point p to the result.
-void AccumulateCl(const BuiltinCall& call, const LightResult& light, int p, float weight) {
-    const int n = call.n;
-    for (int c = 0; c < call.result.width; ++c)
-        call.result.At(c, p) += weight * light.Cl[c * n + p];
-}
-
-// Sums weight(light, p, Ln) · Cl over the lights that reach each point within 90° of N.
+// Sums weight(p, normalize(L), N) · Cl over the non-ambient lights that reach each point with
+// N·normalize(L) ≥ 0 (the cone test Aqsis does).
 template <typename Weight>
 void SumOverLights(const BuiltinCall& call, const FloatArg& normalArg, Weight weight) {
-    ForEachPoint(call, [&](int p) { ClearResult(call, p); });
+    ClearResult(call);
     if (!call.context) return;
-    const std::vector<LightResult>& lights = call.context->Lights();
-    for (const LightResult& light : lights) {
+    const int n = call.n, width = call.result.width;
+    const TripleReader normals(normalArg);
+    float* out = call.result.data;
+    const int outStep = call.result.varying ? 1 : 0, outPlane = call.result.varying ? n : 1;
+    for (const LightResult& light : call.context->Lights()) {
         if (light.ambient) continue;
+        const float *Lx = light.L.data(), *Ly = Lx + n, *Lz = Ly + n;
+        const float* Cl = light.Cl.data();
+        const uint8_t* lit = light.lit.empty() ? nullptr : light.lit.data();
         ForEachPoint(call, [&](int p) {
-            V3 ln = LightDirection(light, call.n, p);
-            V3 normal = Triple(normalArg, p);
-            if (LitInHemisphere(light, p, ln, normal)) {
-                AccumulateCl(call, light, p, weight(p, ln, normal));
-            }
+            if (lit && !lit[p]) return;
+            const V3 ln = Normalized(V3(Lx[p], Ly[p], Lz[p]));
+            const V3 normal = normals(p);
+            if (Dot(ln, normal) < 0.0f) return;
+            const float w = weight(p, ln, normal);
+            for (int c = 0; c < width; ++c) out[c * outPlane + p * outStep] += w * Cl[c * n + p];
         });
     }
 }
 
 void AmbientKernel(const BuiltinCall& call) {
-    ForEachPoint(call, [&](int p) { ClearResult(call, p); });
+    ClearResult(call);
     if (!call.context) return;
     for (const LightResult& light : call.context->Lights()) {
         if (!light.ambient) continue;
-        ForEachPoint(call, [&](int p) { AccumulateCl(call, light, p, 1.0f); });
+        ForEachPoint(call, [&](int p) {
+            for (int c = 0; c < call.result.width; ++c)
+                call.result.At(c, p) += light.Cl[c * call.n + p];
+        });
     }
 }
 
@@ -79,8 +106,10 @@ void DiffuseKernel(const BuiltinCall& call) {
 
 // specular(N, V, roughness) = Σ Cl · specularbrdf(normalize(L), N, V, roughness).
 void SpecularKernel(const BuiltinCall& call) {
+    const TripleReader view(call.args[1]);
+    const FloatReader roughness(call.args[2]);
     SumOverLights(call, call.args[0], [&](int p, const V3& ln, const V3& normal) {
-        return SpecularBrdf(ln, normal, Triple(call.args[1], p), Float(call.args[2], p));
+        return SpecularLobe(ln, normal, view(p), roughness(p));
     });
 }
 
@@ -123,8 +152,7 @@ void TraceKernel(const BuiltinCall& call) {
 }  // namespace
 
 float SpecularBrdf(const V3& ln, const V3& normal, const V3& view, float roughness) {
-    V3 h = Normalized(ln + view);
-    return std::pow(std::max(0.0f, Dot(normal, h)), kSpecularExponentScale / roughness);
+    return SpecularLobe(ln, normal, view, roughness);
 }
 
 void AddLightingBuiltins(BuiltinList* list) {

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "shaderlang/runtime/builtins_derivatives.h"
 #include "shaderlang/runtime/builtins_util.h"
@@ -260,13 +259,17 @@ void SplineKernel(const BuiltinCall& call) {
 
 // ---- random --------------------------------------------------------------------------------
 
-// random() draws from a per-thread generator: uniform in [0, 1) per point and component.
+// random(): uniform in [0, 1) per point and component, from the point's own stream in the
+// context (seeded from its pixel and sample), so that a render does not depend on which thread
+// shades which point. Without a context (kernel tests) each value hashes the point's index.
 void RandomKernel(const BuiltinCall& call) {
-    thread_local std::mt19937 generator(0x5eed);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     const int w = call.result.width;
     ForEachPoint(call, [&](int p) {
-        for (int c = 0; c < w; ++c) call.result.At(c, p) = uniform(generator);
+        for (int c = 0; c < w; ++c) {
+            const uint64_t bits =
+                call.context ? call.context->NextRandomBits(p) : MixBits(uint64_t(p) * w + c + 1);
+            call.result.At(c, p) = float(bits >> 40) * (1.0f / 16777216.0f);  // 24 bits
+        }
     });
 }
 

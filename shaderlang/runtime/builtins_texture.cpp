@@ -1,5 +1,5 @@
-// Texture built-ins (RISpec §15.7): texture, environment, shadow, through ShadingContext (the
-// renderer uses OpenImageIO's TextureSystem).
+// Texture built-ins (RISpec §15.7): texture, environment, shadow and textureinfo, through
+// ShadingContext (the renderer uses OpenImageIO's TextureSystem).
 //
 // RSL's name[chan] selects the first channel (the compiler turns it into a trailing
 // ("firstchannel", chan) option). The coordinates
@@ -201,9 +201,34 @@ void ShadowKernel(const BuiltinCall& call) {
     });
 }
 
+// textureinfo(name, dataname, output v) (RISpec Table 15.3): 1 and v filled when the texture
+// has the fact with v's type ("resolution" float[2], "channels" float, "type" string,
+// "viewingmatrix" and "projectionmatrix" matrix), else 0 and v unchanged.
+void TextureInfoKernel(const BuiltinCall& call) {
+    std::vector<float> floats;
+    std::string text;
+    bool found = call.context && call.context->TextureInfo(call.strings[0].data[0],
+                                                           call.strings[1].data[0], &floats, &text);
+    if (call.argTypes[2].base == BaseType::String) {
+        found = found && floats.empty();
+        if (found) call.strings[2].data[0] = text;
+    } else {
+        const FloatArg& out = call.args[2];
+        found = found && static_cast<int>(floats.size()) == out.width;
+        if (found) {
+            ForEachPoint(call, [&](int p) {
+                for (int c = 0; c < out.width; ++c) out.At(c, p) = floats[c];
+            });
+        }
+    }
+    ForEachPoint(call, [&](int p) { call.result.At(0, p) = found ? 1.0f : 0.0f; });
+}
+
 }  // namespace
 
 void AddTextureBuiltins(BuiltinList* list) {
+    for (const char* out : {"F", "S", "M", "F[]"})
+        list->Add("textureinfo", "f", std::string("ss") + out, TextureInfoKernel);
     const unsigned flags = kVaryingResult | kNeedsDerivatives | kReadsGlobals;
     list->Add("texture", "f", "s*", TextureKernel, flags);
     list->Add("texture", "c", "s*", TextureKernel, flags);

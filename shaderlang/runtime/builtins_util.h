@@ -101,6 +101,7 @@ void AddLightingBuiltins(BuiltinList* list);
 void AddTextureBuiltins(BuiltinList* list);
 void AddMessageBuiltins(BuiltinList* list);
 void AddDerivativeBuiltins(BuiltinList* list);
+void AddBrdfBuiltins(BuiltinList* list);
 
 // The point-like and numeric type codes many rows are generated over.
 inline const char* const kPointLikeCodes[] = {"p", "v", "n"};

@@ -10,12 +10,17 @@
 
 namespace gonio::sl {
 
+struct LightResult;  // shading_context.h
+
 class GlobalsView {
   public:
     virtual ~GlobalsView() = default;
     // The global named `name` as the shader sees it now; data == nullptr when the shader type
     // has no such global (e.g. "Ps" in a surface shader).
     virtual FloatArg Get(const std::string& name) const = 0;
+    // Inside an illuminance loop, the light its body runs for (lightsource() reads it); else
+    // nullptr.
+    virtual const LightResult* CurrentLight() const { return nullptr; }
 };
 
 }  // namespace gonio::sl

@@ -73,6 +73,7 @@ void ExecState::Prepare(const Program& p, int points, int ncomps) {
     }
     lit.assign(size_t(n), 0);
     illuminated = false;
+    solar = false;
     lights = nullptr;
 }
 
@@ -89,8 +90,8 @@ void ExecState::Warn(const Instr& in, const std::string& message) {
     warned = true;
     if (foldMode || !context) return;
     if (warnings && !warnings->First(in.loc, message)) return;
-    const std::string& where = program->locations[in.loc];
-    context->RuntimeWarning(where, message);
+    context->SetStatement(&program->locations[in.loc]);
+    context->RuntimeWarning("", message);
 }
 
 FloatArg ExecState::Get(const std::string& name) const {

@@ -68,6 +68,7 @@ struct ExecState final : GlobalsView {
     int lightIndex = -1;
     std::vector<uint8_t> lit;
     bool illuminated = false;
+    bool solar = false;  // a solar() statement lit some point: the light is at infinity
 
     RegRef Reg(int r) const {
         const Register& info = program->regs[r];
@@ -88,6 +89,10 @@ struct ExecState final : GlobalsView {
     void Execute(int begin, int end);
 
     FloatArg Get(const std::string& name) const override;
+    const LightResult* CurrentLight() const override {
+        const bool inLoop = lights && lightIndex >= 0 && lightIndex < int(lights->size());
+        return inLoop ? &(*lights)[size_t(lightIndex)] : nullptr;
+    }
 };
 
 // Copies entry `from` into `to`, optionally and-ed with a condition register (negated if

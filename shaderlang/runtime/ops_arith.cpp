@@ -214,12 +214,20 @@ void OpNe(ExecState& x, const Instr& in) {
     PerPoint(x, in, [&](int i) { Out(d, 0, i) = float(!AllEqual(a, b, i)); });
 }
 
+// Strings are uniform, so a comparison has one answer; the result register may still be varying
+// (a string written by a built-in's output argument inherits the call's detail): every active
+// point gets the answer.
+void SetStringComparison(ExecState& x, const Instr& in, bool value) {
+    const RegRef d = x.Reg(in.args[0]);
+    PerPoint(x, in, [&](int i) { Out(d, 0, i) = float(value); });
+}
+
 void OpStrEq(ExecState& x, const Instr& in) {
-    *x.Reg(in.args[0]).data = float(x.Str(in.args[1]) == x.Str(in.args[2]));
+    SetStringComparison(x, in, x.Str(in.args[1]) == x.Str(in.args[2]));
 }
 
 void OpStrNe(ExecState& x, const Instr& in) {
-    *x.Reg(in.args[0]).data = float(x.Str(in.args[1]) != x.Str(in.args[2]));
+    SetStringComparison(x, in, x.Str(in.args[1]) != x.Str(in.args[2]));
 }
 
 void OpAnd(ExecState& x, const Instr& in) {

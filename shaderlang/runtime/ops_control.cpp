@@ -4,7 +4,9 @@
 #include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 
@@ -283,17 +285,19 @@ void OpIlluminate(ExecState& x, const Instr& in) {
 void OpSolar(ExecState& x, const Instr& in) {
     const Program& p = *x.program;
     x.illuminated = true;
+    x.solar = true;
     SetMask(x, in.extra, in.extra - 1, nullptr, false);
     const MaskEntry& lit = x.masks[in.extra];
     const int Lreg = p.globals[kGlobalL];
     RegRef L = Lreg >= 0 ? x.Reg(Lreg) : RegRef{};
+    const RegRef axisReg = in.args[0] >= 0 ? x.Reg(in.args[0]) : RegRef{};
     for (int i = 0; i < x.n; ++i) {
         if (!(lit.all || lit.bits[i])) continue;
         x.lit[i] = 1;
         if (!L.data) continue;
         // L = axis: the light arrives along it everywhere. solar() without an axis has no
         // direction to give; L is then 0 (see docs/shading-language.md).
-        Imath::V3f axis = in.args[0] >= 0 ? Triple(x.Reg(in.args[0]), i) : Imath::V3f(0.0f);
+        Imath::V3f axis = axisReg.data ? Triple(axisReg, i) : Imath::V3f(0.0f);
         for (int c = 0; c < 3; ++c) L.Plane(c)[i] = axis[c];
     }
 }
@@ -398,6 +402,7 @@ void OpCall(ExecState& x, const Instr& in) {
     call.active = x.Mask(in);
     call.argCount = argCount;
     call.context = x.context;
+    if (x.context) x.context->SetStatement(&p.locations[in.loc]);
     call.colorComponents = x.colorComponents;
     call.globals = &x;
     for (int k = 0; k < argCount; ++k) {
@@ -426,6 +431,16 @@ void OpCall(ExecState& x, const Instr& in) {
         const int points = r.varying ? x.n : 1;
         for (int c = 0; c < r.width; ++c) {
             const float* plane = r.data + (r.varying ? size_t(c) * x.n : size_t(c));
+            // Results almost never hold a NaN: a scan of the bit patterns (an integer max the
+            // compiler vectorises) first, the per-point mask only when it found one. A float
+            // is a NaN when its magnitude bits exceed those of infinity, 0x7f800000.
+            uint32_t largest = 0;
+            for (int i = 0; i < points; ++i) {
+                uint32_t bits;
+                std::memcpy(&bits, &plane[i], sizeof bits);
+                largest = std::max(largest, bits & 0x7fffffffu);
+            }
+            if (largest <= 0x7f800000u) continue;
             for (int i = 0; i < points; ++i) {
                 if (std::isnan(plane[i]) && (!r.varying || x.Active(call.active, i))) {
                     x.Warn(in, std::string("NaN from ") + info.name + "()");

@@ -31,6 +31,13 @@ awk -v v="${baked%% *}" 'BEGIN { exit !(v > 0.156 && v < 0.162) }' || fail "bake
 "$gonio" brdf section 19 a.grd --theta-in 30,60 --analytic lambert:0.5 --plot s.svg > s.txt 2> /dev/null
 [ "$(grep -vc '^#' s.txt)" -eq 19 ] || fail "section table rows"
 grep -q "<svg" s.svg && grep -q "polyline" s.svg || fail "section plot"
+"$gonio" brdf section 19 a.grd --theta-in 30 --vary phi-out --relative --plot s.png \
+    --plot-size 640 360 --title "png" --label "grid" > /dev/null 2>&1
+oiiotool --info s.png | grep -q "640 x  *360" || fail "section png: $(oiiotool --info s.png)"
+expect_status 2 "$gonio" brdf section 5 a.grd --plot s.nosuchformat
+[ ! -e s.nosuchformat ] || fail "a plot of an unknown format was left behind"
+expect_status 2 "$gonio" brdf section 5 a.grd --plot t.png --plot-size 10 10
+expect_status 2 "$gonio" brdf section 5 a.grd --label a --label b
 "$gonio" brdf sectslow 0.5 0 5 c.pm --vary phi-out > /dev/null
 "$gonio" brdf map 64 3 0.5 45 0 a.grd map.png --colormap viridis --scale-bar > /dev/null
 [ -s map.png ] || fail "map image"

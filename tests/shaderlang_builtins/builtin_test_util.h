@@ -120,11 +120,15 @@ class FakeContext : public ShadingContext {
     const int* VNeighbours() const override {
         return vNeighbours.empty() ? nullptr : vNeighbours.data();
     }
+    const float* NeighbourSteps() const override {
+        return neighbourSteps.empty() ? nullptr : neighbourSteps.data();
+    }
 
     std::map<std::string, Imath::M44f> currentFromSpace;
     std::vector<LightResult> lights;
     int lightQueries = 0;
     std::vector<int> uNeighbours, vNeighbours;
+    std::vector<float> neighbourSteps;  // 4 × n (ShadingContext::NeighbourSteps); empty: none
     std::map<std::string, std::vector<float>> floatInfo;  // attributes, options, renderer
     std::map<std::string, std::string> stringInfo;
     std::map<std::string, std::string> warnings;
