@@ -116,18 +116,9 @@ std::shared_ptr<const Shader> ShadingSystem::Load(const std::string& name, const
     if (cached != cache_.end()) return cached->second;
     const bool hasSuffix = name.size() > 3 && name.compare(name.size() - 3, 3, ".sl") == 0;
     const std::string file = hasSuffix ? name : name + ".sl";
-    std::string source, found;
-    if (!file.empty() && file[0] == '/') {
-        if (ReadTextFile(file, &source)) found = file;
-    } else {
-        for (const std::string& dir : searchPath_) {
-            std::string candidate = dir + "/" + file;
-            if (ReadTextFile(candidate, &source)) {
-                found = candidate;
-                break;
-            }
-        }
-    }
+    std::string source;
+    std::string found = FindOnSearchPath(file, searchPath_);
+    if (!found.empty() && !ReadTextFile(found, &source)) found.clear();
     std::shared_ptr<const Shader> shader;
     if (found.empty()) {
         std::string dirs;

@@ -185,20 +185,24 @@ Fixture& Scene(int which) {
     return *f;
 }
 
+// The sum of count(i) over the fixture's beams, on the cores the benchmark allows.
+template <typename Count>
+int64_t SumOverBeams(const Count& count) {
+    std::atomic<int64_t> sum{0};
+    tbb::parallel_for(tbb::blocked_range<int>(0, kRays, 4096), [&](const auto& r) {
+        int64_t local = 0;
+        for (int i = r.begin(); i != r.end(); ++i) local += count(i);
+        sum += local;
+    });
+    return sum;
+}
+
 template <typename Trace>
 void TraceBeams(benchmark::State& state, const Trace& trace) {
     const Fixture& f = Scene(static_cast<int>(state.range(0)));
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(1));
     int64_t hits = 0;
-    for (auto _ : state) {
-        std::atomic<int64_t> count{0};
-        tbb::parallel_for(tbb::blocked_range<int>(0, kRays, 4096), [&](const auto& r) {
-            int64_t local = 0;
-            for (int i = r.begin(); i != r.end(); ++i) local += trace(f, f.beams[i]);
-            count += local;
-        });
-        hits = count;
-    }
+    for (auto _ : state) hits = SumOverBeams([&](int i) { return trace(f, f.beams[i]); });
     state.counters["rays/s"] =
         benchmark::Counter(double(kRays), benchmark::Counter::kIsIterationInvariantRate);
     state.counters["hit%"] = 100.0 * hits / kRays;
@@ -224,17 +228,10 @@ void BM_RaySceneBeams(benchmark::State& state) {
 void BM_RawEmbreePhotons(benchmark::State& state) {
     const Fixture& f = Scene(static_cast<int>(state.range(0)));
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(1));
+    const RawEmbree& raw = Raw(f, state);
     int64_t bounces = 0;
-    for (auto _ : state) {
-        std::atomic<int64_t> count{0};
-        tbb::parallel_for(tbb::blocked_range<int>(0, kRays, 4096), [&](const auto& r) {
-            int64_t local = 0;
-            const RawEmbree& raw = Raw(f, state);
-            for (int i = r.begin(); i != r.end(); ++i) local += raw.TracePath(f.beams[i], i);
-            count += local;
-        });
-        bounces = count;
-    }
+    for (auto _ : state)
+        bounces = SumOverBeams([&](int i) { return int64_t(raw.TracePath(f.beams[i], i)); });
     state.counters["paths/s"] =
         benchmark::Counter(double(kRays), benchmark::Counter::kIsIterationInvariantRate);
     state.counters["rays/s"] =

@@ -131,6 +131,9 @@ const std::vector<sl::LightResult>& RenderContext::Lights() {
 // point to the light, so the shadow ray ends just before L's tip; for a solar light L is only a
 // direction, and the ray goes on for ever.
 void RenderContext::TraceShadows(sl::LightResult* light) const {
+    // Shadows are traced at the shutter's opening: points of a batch have no common time.
+    const float time = shaders_.GetFrame().options.shutterOpen;
+    const float end = light->atInfinity ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
     for (int i = 0; i < n_; ++i) {
         if (!light->lit[i]) continue;
         V3f L = ToV3(light->L.data(), n_, i), P = ToV3(lightP_, n_, i);
@@ -138,9 +141,6 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
         worldFromCurrent_.multVecMatrix(P, org);
         worldFromCurrent_.multDirMatrix(L, dir);
         const float eps = 1e-4f * std::max(1.f, org.length() / std::max(dir.length(), 1e-20f));
-        // Shadows are traced at the shutter's opening: points of a batch have no common time.
-        const float time = shaders_.GetFrame().options.shutterOpen;
-        const float end = light->atInfinity ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
         if (!scene_.Occluded(org, dir, eps, end, time)) continue;
         for (int c = 0; c < colorComponents_; ++c) light->Cl[c * n_ + i] = 0;
     }
@@ -174,9 +174,11 @@ bool RenderContext::Environment(const std::string& name, int firstChannel, int c
 }
 
 std::string RenderContext::FindTexture(const std::string& name) const {
+    auto known = foundTextures_.find(name);
+    if (known != foundTextures_.end()) return known->second;
     const std::string found = FindOnSearchPath(name, shaders_.TextureSearchPath());
     // Not found: the name as given, so that the reader's error message names what was asked.
-    return found.empty() ? name : found;
+    return foundTextures_.emplace(name, found.empty() ? name : found).first->second;
 }
 
 // The matrices a texture was made with take world space to its camera and screen; the

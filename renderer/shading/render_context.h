@@ -4,6 +4,8 @@
 // and options. One per thread; Begin() points it at the next batch.
 
 #include <mutex>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "render/ray_scene.h"
@@ -133,6 +135,9 @@ class RenderContext : public sl::ShadingContext {
     M44f worldFromCurrent_;
     sl::MessageShaders messageShaders_;
     bool captureLights_ = false;
+    // FindTexture's answers by name: looking a name up costs file-system calls, and texture()
+    // and brdf() ask again for every batch.
+    mutable std::unordered_map<std::string, std::string> foundTextures_;
 };
 
 }  // namespace gonio

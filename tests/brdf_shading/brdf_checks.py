@@ -33,26 +33,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tests", "render"))
 # One oiiotool call reads every image; checks fail by raising CheckFailed.
-from analytic_checks import CheckFailed, expect, read_images  # noqa: E402
-
-
-class Workspace:
-    def __init__(self, gonio, directory):
-        self.gonio, self.dir = gonio, directory
-
-    def path(self, name):
-        return os.path.join(self.dir, name)
-
-    def run(self, *args):
-        proc = subprocess.run([self.gonio, *args], cwd=self.dir, capture_output=True, text=True)
-        expect(proc.returncode == 0,
-               f"gonio {' '.join(args)} exited with {proc.returncode}:\n{proc.stderr}")
-        return proc
-
-    def write(self, name, text):
-        with open(self.path(name), "w") as f:
-            f.write(text)
-        return self.path(name)
+from analytic_checks import CheckFailed, Workspace, expect, read_images  # noqa: E402
 
 
 def measured_grid(ws, model, rays, theta_range, optimiser, out):
@@ -65,10 +46,9 @@ def measured_grid(ws, model, rays, theta_range, optimiser, out):
                          f'"integer rays" {rays} "float thetamin" {theta_range[0]} '
                          f'"float thetamax" {theta_range[1]}', rib)
     expect(count == 1, f"ribs/{model}.rib has no \"integer rays\" to override")
-    scene = ws.write(model + ".rib", rib)
-    ws.run("render", scene, "-o", model + ".pm")
+    ws.render(rib, model, ["-o", model + ".pm"])
     os.makedirs(ws.path("grids"), exist_ok=True)
-    ws.run("brdf", *optimiser, model + ".pm", os.path.join("grids", out))
+    ws.run(["brdf", *optimiser, model + ".pm", os.path.join("grids", out)])
     os.remove(ws.path(model + ".pm"))
 
 
@@ -123,10 +103,6 @@ def frames(surfaces, camera, lights, size=48, fov=30):
     return out
 
 
-def render_images(ws, name, rib):
-    ws.run("render", ws.write(name + ".rib", rib))
-
-
 def compare(measured, reference, tolerance, relative_to_peak, what):
     peak = max(p[0] for p in reference.pixels.values())
     expect(peak > 0, f"{what}: the reference image is black")
@@ -151,7 +127,7 @@ def check_lambert(ws):
                   ["iopt", "6", "24", "0.4", "0", "--bake", "16"], "lambert.grd")
     camera = look_at((0.0, 0.0, 4.0), (0.0, 0.0, 0.0))
     lights = [distant(45, 0), distant(40, 130, 0.6)]
-    render_images(ws, "lambert", frames(
+    ws.render(frames(
         [("lambert_brdf", 'Surface "brdfsurface" "string grid" "lambert.grd"'),
          ("lambert_ref", 'Surface "lambertref" "float Kd" 1')], camera, lights))
     measured, reference = read_images(ws.path("lambert_brdf.tif"), ws.path("lambert_ref.tif"))
@@ -165,7 +141,7 @@ def check_phong(ws):
     # The viewer near the light's mirror direction (θ = 45°, φ = 180°), so the lobe fills the
     # view.
     camera = look_at((-3.0, 0.0, 3.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    render_images(ws, "phong", frames(
+    ws.render(frames(
         [("phong_brdf", 'Surface "brdfsurface" "string grid" "phong.grd"'),
          ("phong_ref", 'Surface "phongref" "float Ks" 1 "float exponent" 25')], camera, [distant(45, 0)]))
     measured, reference = read_images(ws.path("phong_brdf.tif"), ws.path("phong_ref.tif"))
@@ -197,7 +173,7 @@ def check_rotation(ws):
         return (f'Surface "brdfsurface" "string grid" "{grid}" "string orientation" "direction" '
                 f'"vector direction" [{x} {y} 0]')
 
-    render_images(ws, "rotation", frames(
+    ws.render(frames(
         [("brushed_x", along("brushed.grd", 1, 0)), ("brushed_y", along("brushed.grd", 0, 1)),
          ("lambert_x", along("lambert.grd", 1, 0)), ("lambert_y", along("lambert.grd", 0, 1))],
         camera, lights, fov=60))
@@ -223,7 +199,7 @@ def check_rotation(ws):
 def check_missing(ws):
     rib = frames([("missing", 'Surface "brdfsurface" "string grid" "no_such.grd"')],
                  look_at((0.0, 0.0, 4.0), (0.0, 0.0, 0.0)), [distant(30, 0)], size=16)
-    proc = ws.run("render", ws.write("missing.rib", rib))
+    proc = ws.render(rib, "missing")
     lines = [line for line in proc.stderr.splitlines() if "no_such.grd" in line]
     expect(len(lines) == 1, f"expected one message about no_such.grd, got:\n{proc.stderr}")
     expect(re.search(r"brdf_lighting\.h:\d+", lines[0]) is not None,
@@ -245,7 +221,7 @@ def main():
     parser.add_argument("names", nargs="*", help="checks to run (default: all)")
     args = parser.parse_args()
     directory = tempfile.mkdtemp(prefix="brdf_checks_")
-    ws = Workspace(os.path.abspath(args.gonio), directory)
+    ws = Workspace(os.path.abspath(args.gonio), directory)  # scenes in a folder below it
     failures = 0
     for name in args.names or CHECKS:
         try:
