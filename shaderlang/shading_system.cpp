@@ -416,6 +416,8 @@ const float* GlobalSource(int id, const ShaderGlobals& g) {
             return g.Oi ? g.Oi : g.Os;
         case kGlobalPs:
             return g.Ps;
+        case kGlobalAlpha:
+            return g.alphas;
         default:
             return nullptr;
     }

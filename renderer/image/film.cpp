@@ -44,87 +44,139 @@ FilmSpec FilmSpec::FromCropWindow(int xres, int yres, float cropXmin, float crop
     return spec;
 }
 
-Film::Film(const FilmSpec& spec, const PixelFilter& filter)
+Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
     : spec_(spec),
       filter_(filter),
+      tileSize_(std::max(1, tileSize)),
       xmargin_(FilterMargin(filter.XRadius())),
       ymargin_(FilterMargin(filter.YRadius())),
-      rangeXmin_(spec.xmin - xmargin_),
-      rangeYmin_(spec.ymin - ymargin_),
-      rangeWidth_(spec.WindowWidth() + 2 * xmargin_),
-      rangeHeight_(spec.WindowHeight() + 2 * ymargin_),
-      stride_(2 + spec.channels) {
-    // A NaN position marks a sample never set.
-    samples_.assign(size_t(rangeWidth_) * rangeHeight_ * spec.SamplesPerPixel() * stride_,
-                    std::numeric_limits<float>::quiet_NaN());
+      range_(Imath::V2i(spec.xmin - xmargin_, spec.ymin - ymargin_),
+             Imath::V2i(spec.xmax + xmargin_, spec.ymax + ymargin_)),
+      tilesX_((range_.max.x - range_.min.x + tileSize_) / tileSize_),
+      tilesY_((range_.max.y - range_.min.y + tileSize_) / tileSize_),
+      tiles_(size_t(tilesX_) * tilesY_) {}
+
+Imath::Box2i Film::PixelRange() const { return range_; }
+
+Imath::Box2i Film::TilePixels(int tile) const {
+    const Imath::V2i min(range_.min.x + (tile % tilesX_) * tileSize_,
+                         range_.min.y + (tile / tilesX_) * tileSize_);
+    const Imath::V2i max(std::min(min.x + tileSize_ - 1, range_.max.x),
+                         std::min(min.y + tileSize_ - 1, range_.max.y));
+    return Imath::Box2i(min, max);
 }
 
-Imath::Box2i Film::PixelRange() const {
-    return Imath::Box2i(Imath::V2i(rangeXmin_, rangeYmin_),
-                        Imath::V2i(rangeXmin_ + rangeWidth_ - 1, rangeYmin_ + rangeHeight_ - 1));
+Imath::Box2i Film::Footprint(const Imath::Box2i& pixels) const {
+    return Imath::Box2i(Imath::V2i(std::max(pixels.min.x - xmargin_, spec_.xmin),
+                                   std::max(pixels.min.y - ymargin_, spec_.ymin)),
+                        Imath::V2i(std::min(pixels.max.x + xmargin_, spec_.xmax),
+                                   std::min(pixels.max.y + ymargin_, spec_.ymax)));
 }
 
-size_t Film::SampleIndex(int px, int py, int s) const {
-    size_t pixel = size_t(py - rangeYmin_) * rangeWidth_ + size_t(px - rangeXmin_);
-    return (pixel * spec_.SamplesPerPixel() + s) * stride_;
+FilmTile Film::StartTile(int tile) const { return FilmTile(*this, tile); }
+
+void Film::StoreTile(FilmTile&& tile) {
+    if (tile.film_ == this && tile.index_ >= 0 && tile.index_ < TileCount())
+        tiles_[size_t(tile.index_)] = std::move(tile);
 }
 
-void Film::SetSample(int px, int py, int s, float x, float y, const float* values) {
-    if (px < rangeXmin_ || px >= rangeXmin_ + rangeWidth_ || py < rangeYmin_ ||
-        py >= rangeYmin_ + rangeHeight_ || s < 0 || s >= spec_.SamplesPerPixel())
-        return;  // no window pixel needs it
-    float* sample = &samples_[SampleIndex(px, py, s)];
-    sample[0] = x;
-    sample[1] = y;
-    std::copy(values, values + spec_.channels, sample + 2);
+FilmTile::FilmTile(const Film& film, int index)
+    : film_(&film),
+      index_(index),
+      pixels_(film.TilePixels(index)),
+      footprint_(film.Footprint(pixels_)),
+      channels_(film.Spec().channels) {
+    // A tile wholly in the margin beyond a corner may reach no window pixel.
+    const size_t pixels = footprint_.isEmpty()
+                              ? 0
+                              : size_t(footprint_.max.x - footprint_.min.x + 1) *
+                                    size_t(footprint_.max.y - footprint_.min.y + 1);
+    sums_.assign(pixels * channels_, 0.0);
+    weights_.assign(pixels * 2, 0.0);
+    nearest_.assign(pixels * (1 + channels_), 0.0f);
+    for (size_t i = 0; i < pixels; ++i)
+        nearest_[i * (1 + channels_)] = std::numeric_limits<float>::infinity();
+    depth_.assign(pixels, std::numeric_limits<float>::infinity());
+}
+
+void FilmTile::AddSample(int px, int py, float x, float y, const float* values) {
+    if (!film_ || !pixels_.intersects(Imath::V2i(px, py))) return;
+    const int depthChannel = film_->Spec().depthChannel;
+    if (depthChannel >= 0 && footprint_.intersects(Imath::V2i(px, py))) {
+        float& depth = depth_[PixelIndex(px, py)];
+        depth = std::min(depth, values[depthChannel]);
+    }
+    // The sample counts for pixel q when -radius <= x - (q + 0.5) < radius.
+    const float xr = film_->Filter().XRadius(), yr = film_->Filter().YRadius();
+    const int qxmin = std::max(footprint_.min.x, px - film_->xmargin_);
+    const int qxmax = std::min(footprint_.max.x, px + film_->xmargin_);
+    const int qymin = std::max(footprint_.min.y, py - film_->ymargin_);
+    const int qymax = std::min(footprint_.max.y, py + film_->ymargin_);
+    for (int qy = qymin; qy <= qymax; ++qy) {
+        const float dy = y - (qy + 0.5f);
+        if (dy < -yr || dy >= yr) continue;
+        for (int qx = qxmin; qx <= qxmax; ++qx) {
+            const float dx = x - (qx + 0.5f);
+            if (dx < -xr || dx >= xr) continue;
+            AddToPixel(qx, qy, dx, dy, values);
+        }
+    }
+}
+
+void FilmTile::AddToPixel(int qx, int qy, float dx, float dy, const float* values) {
+    const size_t pixel = PixelIndex(qx, qy);
+    float* nearest = &nearest_[pixel * (1 + channels_)];
+    const float distance = dx * dx + dy * dy;
+    if (distance < nearest[0]) {
+        nearest[0] = distance;
+        std::copy(values, values + channels_, nearest + 1);
+    }
+    const float w = film_->Filter().Evaluate(dx, dy);
+    if (w == 0.0f) return;
+    weights_[2 * pixel] += w;
+    weights_[2 * pixel + 1] += std::fabs(w);
+    double* sum = &sums_[pixel * channels_];
+    for (int c = 0; c < channels_; ++c) sum[c] += double(w) * values[c];
 }
 
 void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) const {
-    const int channels = spec_.channels, spp = spec_.SamplesPerPixel();
-    const float cx = px + 0.5f, cy = py + 0.5f;
-    const float xr = filter_.XRadius(), yr = filter_.YRadius();
+    const int channels = spec_.channels;
     std::fill(sum.begin(), sum.end(), 0.0);
     double weightSum = 0.0, absWeightSum = 0.0;
     const float* nearest = nullptr;
     float nearestDistance = std::numeric_limits<float>::infinity();
-    // Fixed order (rows, columns, samples) so the floating-point sums never depend on threads.
-    for (int qy = py - ymargin_; qy <= py + ymargin_; ++qy) {
-        for (int qx = px - xmargin_; qx <= px + xmargin_; ++qx) {
-            const float* sample = &samples_[SampleIndex(qx, qy, 0)];
-            for (int s = 0; s < spp; ++s, sample += stride_) {
-                if (std::isnan(sample[0])) continue;
-                float dx = sample[0] - cx, dy = sample[1] - cy;
-                if (dx < -xr || dx >= xr || dy < -yr || dy >= yr) continue;
-                float distance = dx * dx + dy * dy;
-                if (distance < nearestDistance) {
-                    nearestDistance = distance;
-                    nearest = sample;
-                }
-                float w = filter_.Evaluate(dx, dy);
-                if (w == 0.0f) continue;
-                weightSum += w;
-                absWeightSum += std::fabs(w);
-                for (int c = 0; c < channels; ++c) sum[c] += double(w) * sample[2 + c];
+    float depth = std::numeric_limits<float>::infinity();
+    // The tiles whose samples reach (px, py), in tile order, so the floating-point sums never
+    // depend on threads.
+    const int txmin = std::max(0, (px - xmargin_ - range_.min.x) / tileSize_);
+    const int txmax = std::min(tilesX_ - 1, (px + xmargin_ - range_.min.x) / tileSize_);
+    const int tymin = std::max(0, (py - ymargin_ - range_.min.y) / tileSize_);
+    const int tymax = std::min(tilesY_ - 1, (py + ymargin_ - range_.min.y) / tileSize_);
+    for (int ty = tymin; ty <= tymax; ++ty) {
+        for (int tx = txmin; tx <= txmax; ++tx) {
+            const FilmTile& tile = tiles_[size_t(ty) * tilesX_ + tx];
+            if (!tile.film_ || !tile.footprint_.intersects(Imath::V2i(px, py))) continue;
+            const size_t pixel = tile.PixelIndex(px, py);
+            const float* tileNearest = &tile.nearest_[pixel * (1 + channels)];
+            if (tileNearest[0] < nearestDistance) {
+                nearestDistance = tileNearest[0];
+                nearest = tileNearest + 1;
             }
+            depth = std::min(depth, tile.depth_[pixel]);
+            weightSum += tile.weights_[2 * pixel];
+            absWeightSum += tile.weights_[2 * pixel + 1];
+            for (int c = 0; c < channels; ++c) sum[c] += tile.sums_[pixel * channels + c];
         }
     }
-    bool cancelled =
+    const bool cancelled =
         absWeightSum == 0.0 || std::fabs(weightSum) < kCancelledWeightFraction * absWeightSum;
     for (int c = 0; c < channels; ++c) {
         if (!cancelled)
             out[c] = float(sum[c] / weightSum);
         else
-            out[c] = nearest ? nearest[2 + c] : 0.0f;
+            out[c] = nearest ? nearest[c] : 0.0f;
     }
-}
-
-void Film::ResolveDepth(int px, int py, float* out) const {
-    // RenderMan's "min" depth filter over the pixel's own samples.
-    float depth = std::numeric_limits<float>::infinity();
-    const float* sample = &samples_[SampleIndex(px, py, 0)];
-    for (int s = 0; s < spec_.SamplesPerPixel(); ++s, sample += stride_)
-        if (!std::isnan(sample[0])) depth = std::min(depth, sample[2 + spec_.depthChannel]);
-    out[spec_.depthChannel] = depth;
+    if (spec_.depthChannel >= 0 && spec_.depthChannel < channels) out[spec_.depthChannel] = depth;
 }
 
 Image Film::Resolve() const {
@@ -137,16 +189,11 @@ Image Film::Resolve() const {
     image.fullWidth = spec_.xres;
     image.fullHeight = spec_.yres;
     image.pixels.resize(size_t(image.width) * image.height * image.channels);
-    const bool hasDepth = spec_.depthChannel >= 0 && spec_.depthChannel < spec_.channels;
     tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const auto& rows) {
         std::vector<double> sums(spec_.channels);
-        for (int y = rows.begin(); y != rows.end(); ++y) {
-            for (int x = 0; x < image.width; ++x) {
-                float* out = image.At(x, y);
-                ResolvePixel(spec_.xmin + x, spec_.ymin + y, sums, out);
-                if (hasDepth) ResolveDepth(spec_.xmin + x, spec_.ymin + y, out);
-            }
-        }
+        for (int y = rows.begin(); y != rows.end(); ++y)
+            for (int x = 0; x < image.width; ++x)
+                ResolvePixel(spec_.xmin + x, spec_.ymin + y, sums, image.At(x, y));
     });
     return image;
 }

@@ -1,8 +1,10 @@
 #pragma once
-// The film: every camera sample's raster position and values, kept until the frame is done and
-// then resolved into pixels by the pixel filter. Keeping the samples (instead of splatting them
-// into pixels as they arrive) makes the result independent of the order in which threads finish,
-// and lets samples of neighbouring tiles contribute across tile borders.
+// The film: camera samples filtered into pixels. The frame is cut into square tiles; the
+// renderer splats each tile's samples into a FilmTile (filter-weighted sums for every pixel the
+// samples reach, including pixels of neighbouring tiles), and Resolve adds, for each pixel, the
+// sums of the tiles that reach it in tile order. The result is therefore the same whatever order
+// threads finish their tiles in, and only a few floats per pixel are kept instead of every
+// sample.
 //
 // Coordinates. Raster space has its origin at the top-left corner of the full frame (Format
 // xres yres), x to the right, y down; pixel (px, py) covers [px, px+1) x [py, py+1) and its centre
@@ -66,10 +68,12 @@ struct Image {
     const float* At(int x, int y) const { return &pixels[(size_t(y) * width + x) * channels]; }
 };
 
+class FilmTile;
+
 class Film {
   public:
     // The filter fixes the margin of extra pixels around the window whose samples are needed.
-    Film(const FilmSpec& spec, const PixelFilter& filter);
+    Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize = 16);
 
     const FilmSpec& Spec() const { return spec_; }
     const PixelFilter& Filter() const { return filter_; }
@@ -80,29 +84,67 @@ class Film {
     // filtered from a full footprint like every other pixel.
     Imath::Box2i PixelRange() const;
 
-    // Stores sample s (0 <= s < SamplesPerPixel()) of pixel (px, py) taken at raster position
-    // (x, y), with `Spec().channels` values. Threads may call this concurrently for different
-    // (px, py, s). A sample never set is left out of the resolve, and one outside PixelRange()
-    // is dropped (no window pixel needs it).
-    void SetSample(int px, int py, int s, float x, float y, const float* values);
+    // PixelRange() cut into tiles of tileSize x tileSize pixels (smaller at the right and bottom
+    // edges), numbered row by row.
+    int TileCount() const { return tilesX_ * tilesY_; }
+    Imath::Box2i TilePixels(int tile) const;
 
-    // Filters the stored samples into the window's pixels, in parallel. Each pixel sums the
-    // samples inside its filter footprint in a fixed order and divides by the sum of weights,
-    // so the result is the same whatever the number of threads. Where the weights cancel (a
-    // negative lobe), the pixel takes the value of its nearest sample.
+    // An empty tile to splat the samples of TilePixels(tile) into.
+    FilmTile StartTile(int tile) const;
+    // Keeps a finished tile for Resolve. Threads may store different tiles concurrently; storing
+    // a tile twice replaces it.
+    void StoreTile(FilmTile&& tile);
+
+    // Filters the stored tiles into the window's pixels, in parallel. Each pixel adds the sums of
+    // the tiles that reach it in tile order and divides by the sum of weights, so the result is
+    // the same whatever the number of threads. Where the weights cancel (a negative lobe), the
+    // pixel takes the value of its nearest sample; a pixel no sample reaches is 0.
     Image Resolve() const;
 
   private:
-    size_t SampleIndex(int px, int py, int s) const;
+    friend class FilmTile;
+    // The window pixels that samples of `pixels` can reach.
+    Imath::Box2i Footprint(const Imath::Box2i& pixels) const;
     void ResolvePixel(int px, int py, std::vector<double>& sum, float* out) const;
-    void ResolveDepth(int px, int py, float* out) const;
 
     FilmSpec spec_;
     PixelFilter filter_;
+    int tileSize_;
     int xmargin_, ymargin_;
-    int rangeXmin_, rangeYmin_, rangeWidth_, rangeHeight_;
-    int stride_;  // floats per sample: x, y, then the channels
-    std::vector<float> samples_;
+    Imath::Box2i range_;
+    int tilesX_, tilesY_;
+    std::vector<FilmTile> tiles_;
+};
+
+// The samples of one tile, splatted: for each window pixel they reach, the filter-weighted sums
+// of their channels, the sums of weights, the nearest sample (the fallback where weights cancel)
+// and the smallest depth among the pixel's own samples (RenderMan's "min" depth filter).
+class FilmTile {
+  public:
+    FilmTile() = default;
+
+    // Adds a sample of pixel (px, py) taken at raster position (x, y), with Spec().channels
+    // values. A sample of a pixel outside the tile is dropped.
+    void AddSample(int px, int py, float x, float y, const float* values);
+
+  private:
+    friend class Film;
+    FilmTile(const Film& film, int index);
+    size_t PixelIndex(int px, int py) const {
+        return size_t(py - footprint_.min.y) * size_t(footprint_.max.x - footprint_.min.x + 1) +
+               size_t(px - footprint_.min.x);
+    }
+    void AddToPixel(int qx, int qy, float dx, float dy, const float* values);
+
+    const Film* film_ = nullptr;
+    int index_ = -1;
+    Imath::Box2i pixels_;     // whose samples it takes
+    Imath::Box2i footprint_;  // the window pixels they can reach
+    int channels_ = 0;
+    std::vector<double> sums_;     // channels_ per footprint pixel
+    std::vector<double> weights_;  // sum of weights, sum of |weights|: 2 per pixel
+    std::vector<float> nearest_;   // distance², then the channels: 1 + channels_ per pixel
+    std::vector<float> depth_;     // per footprint pixel
 };
 
 }  // namespace gonio

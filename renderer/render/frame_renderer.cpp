@@ -1,6 +1,6 @@
 #include "render/frame_renderer.h"
 
-#include <tbb/blocked_range2d.h>
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -17,6 +17,7 @@
 #include "render/progress.h"
 #include "render/random.h"
 #include "render/ray_scene.h"
+#include "shading/imager_shading.h"
 #include "shading/surface_shading.h"
 
 namespace gonio {
@@ -234,6 +235,51 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
     }
 }
 
+// The camera samples of a tile's pixels: stratified, one jittered sample in each cell of the
+// pixel's xsamples x ysamples grid, with lens position and time, all drawn from a random stream
+// seeded by the render's seed, the pixel and the sample, so they never depend on threads.
+class SampleGenerator {
+  public:
+    SampleGenerator(uint64_t seed, int xsamples, int ysamples, const Options& options,
+                    const Camera& camera, int outputFloats)
+        : seed_(seed),
+          xsamples_(xsamples),
+          ysamples_(ysamples),
+          shutterOpen_(options.shutterOpen),
+          shutterLength_(std::max(0.f, options.shutterClose - options.shutterOpen)),
+          camera_(camera),
+          outputFloats_(outputFloats) {}
+
+    void AddSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
+        for (int py = pixels.min.y; py <= pixels.max.y; ++py)
+            for (int px = pixels.min.x; px <= pixels.max.x; ++px)
+                for (int sy = 0, s = 0; sy < ysamples_; ++sy)
+                    for (int sx = 0; sx < xsamples_; ++sx, ++s)
+                        samples->push_back(MakeSample(px, py, sx, sy, s));
+    }
+
+  private:
+    SampleState MakeSample(int px, int py, int sx, int sy, int s) const {
+        SampleRandom random(seed_, px, py, s);
+        SampleState sample;
+        sample.px = px, sample.py = py, sample.s = s;
+        sample.randomSeed = random.Seed();
+        sample.outputs.assign(size_t(outputFloats_), 0.f);
+        sample.x = px + (sx + random.Next()) / xsamples_;
+        sample.y = py + (sy + random.Next()) / ysamples_;
+        sample.lensU = random.Next(), sample.lensV = random.Next();
+        const float time = shutterOpen_ + random.Next() * shutterLength_;
+        sample.ray = camera_.GenerateRay(sample.x, sample.y, sample.lensU, sample.lensV, time);
+        return sample;
+    }
+
+    uint64_t seed_;
+    int xsamples_, ysamples_;
+    float shutterOpen_, shutterLength_;
+    const Camera& camera_;
+    int outputFloats_;
+};
+
 PixelFilter MakeFilter(const Options& options, Diagnostics& diagnostics) {
     std::string error;
     std::optional<PixelFilter> filter = PixelFilter::FromRib(
@@ -318,7 +364,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const FilmSpec spec = FilmSpec::FromCropWindow(
         options.xres, options.yres, options.cropWindow[0], options.cropWindow[1],
         options.cropWindow[2], options.cropWindow[3], xsamples, ysamples, int(channelNames.size()));
-    Film film(spec, MakeFilter(options, diagnostics));
+    Film film(spec, MakeFilter(options, diagnostics), kTileSize);
     const Imath::Box2i range = film.PixelRange();
     const int width = range.max.x - range.min.x + 1, height = range.max.y - range.min.y + 1;
 
@@ -327,51 +373,40 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
         [&] { return shading->MakeWorker(); });
     tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(range.min.y, range.max.y + 1, kTileSize, range.min.x,
-                                  range.max.x + 1, kTileSize),
-        [&](const tbb::blocked_range2d<int>& tile) {
-            std::vector<SampleState> samples;
-            for (int py = tile.rows().begin(); py < tile.rows().end(); ++py) {
-                for (int px = tile.cols().begin(); px < tile.cols().end(); ++px) {
-                    for (int sy = 0, s = 0; sy < ysamples; ++sy) {
-                        for (int sx = 0; sx < xsamples; ++sx, ++s) {
-                            SampleRandom random(settings.seed, px, py, s);
-                            // Stratified: one jittered sample in each cell of the pixel's grid.
-                            SampleState sample;
-                            sample.px = px, sample.py = py, sample.s = s;
-                            sample.randomSeed = random.Seed();
-                            sample.outputs.assign(size_t(OutputFloats(outputs)), 0.f);
-                            sample.x = px + (sx + random.Next()) / xsamples;
-                            sample.y = py + (sy + random.Next()) / ysamples;
-                            sample.lensU = random.Next(), sample.lensV = random.Next();
-                            const float time =
-                                options.shutterOpen +
-                                random.Next() *
-                                    std::max(0.f, options.shutterClose - options.shutterOpen);
-                            sample.ray = camera.GenerateRay(sample.x, sample.y, sample.lensU,
-                                                            sample.lensV, time);
-                            samples.push_back(sample);
-                        }
-                    }
-                }
-            }
+    const SampleGenerator generator(settings.seed, xsamples, ysamples, options, camera,
+                                    OutputFloats(outputs));
+    tbb::parallel_for(tbb::blocked_range<int>(0, film.TileCount(), 1), [&](const auto& tiles) {
+        std::vector<SampleState> samples;
+        for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+            const Imath::Box2i pixels = film.TilePixels(tile);
+            samples.clear();
+            generator.AddSamples(pixels, &samples);
             auto& renderer = renderers.local();
             if (!renderer)
                 renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options,
                                                           outputs);
             raysTraced += renderer->Render(samples);
+            FilmTile filmTile = film.StartTile(tile);
+            std::vector<float> values(kStandardChannelCount + OutputFloats(outputs));
             for (const SampleState& sample : samples) {
-                std::vector<float> values = {sample.colour[0], sample.colour[1], sample.colour[2],
-                                             sample.alpha, sample.depth};
-                values.insert(values.end(), sample.outputs.begin(), sample.outputs.end());
-                film.SetSample(sample.px, sample.py, sample.s, sample.x, sample.y, values.data());
+                values[kChannelR] = sample.colour[0];
+                values[kChannelG] = sample.colour[1];
+                values[kChannelB] = sample.colour[2];
+                values[kChannelA] = sample.alpha;
+                values[kChannelZ] = sample.depth;
+                std::copy(sample.outputs.begin(), sample.outputs.end(),
+                          values.begin() + kStandardChannelCount);
+                filmTile.AddSample(sample.px, sample.py, sample.x, sample.y, values.data());
             }
-            progress.Advance(uint64_t(tile.rows().size()) * tile.cols().size());
-        });
+            film.StoreTile(std::move(filmTile));
+            progress.Advance(uint64_t(pixels.max.x - pixels.min.x + 1) *
+                             (pixels.max.y - pixels.min.y + 1));
+        }
+    });
     progress.Done();
 
-    const Image image = film.Resolve();
+    Image image = film.Resolve();
+    ApplyImager(frame, settings.seed, image, diagnostics);  // before Exposure: RISpec §4.1.2
     Exposure exposure{options.gain, options.gamma};
     const QuantizeSetting& cq = options.colorQuantize;
     const QuantizeSetting& dq = options.depthQuantize;

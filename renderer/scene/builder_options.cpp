@@ -148,10 +148,11 @@ void SceneBuilder::Exposure(float gain, float gamma, const FileLoc& loc) {
     state_->options.gamma = gamma;
 }
 
-void SceneBuilder::Imager(const std::string& name, const ParamList&, const FileLoc& loc) {
-    if (name != "null" && !name.empty())
-        diagnostics_.WarningOnce("Imager", loc,
-                                 "Imager shaders are not supported yet; \"" + name + "\" ignored");
+void SceneBuilder::Imager(const std::string& name, const ParamList& params, const FileLoc& loc) {
+    if (!RequireOptions("Imager", loc)) return;
+    // Loaded and run after the frame is filtered (shading/imager_shading.h); "null" or an empty
+    // name leaves the option unset.
+    SetShader(&state_->options.imager, name, params, loc);
 }
 
 void SceneBuilder::Quantize(const std::string& type, int one, int min, int max, float dither,
@@ -196,6 +197,7 @@ void SceneBuilder::ColorSamples(const std::vector<float>& nRGB, const std::vecto
     const int n = static_cast<int>(nRGB.size() / 3);
     state_->options.colorComponents = n;
     state_->options.colorToRgb = nRGB;
+    state_->options.colorFromRgb = RGBn;
     MutableAttributes().color.assign(n, 1.f);
     MutableAttributes().opacity.assign(n, 1.f);
 }

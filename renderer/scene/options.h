@@ -10,6 +10,7 @@
 
 #include "rib/file_loc.h"
 #include "rib/param_list.h"
+#include "scene/attributes.h"
 
 namespace gonio {
 
@@ -46,6 +47,10 @@ struct Options {
     int colorComponents = 3;  // ColorSamples
     // ColorSamples' nRGB: n rows of 3, RGB = Σ colour[i]·row i. Empty: the colours are RGB.
     std::vector<float> colorToRgb;
+    // ColorSamples' RGBn: 3 rows of n, colour = Σ RGB[c]·row c. Empty: the colours are RGB.
+    std::vector<float> colorFromRgb;
+    // Imager: the shader run over the filtered pixels (unset, or "null": none).
+    ShaderInstance imager;
     std::string hider = "hidden";
     // ErrorHandler: "print" (RISpec's default: report and go on, skipping the bad request),
     // "ignore" (the same; messages are still printed), or "abort" (no frame is rendered once an

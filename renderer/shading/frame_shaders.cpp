@@ -51,19 +51,41 @@ std::vector<std::string> SearchPath(const Frame& frame, const std::string& kind,
     return standard;
 }
 
-// Shaders are looked for next to the scene, then among those that ship with gonio.
-std::vector<std::string> ShaderSearchPath(const Frame& frame) {
-    return SearchPath(frame, "shader", {SceneFolder(frame), DefaultShaderFolder()});
-}
-
 // Textures and .grd files: relative to the working folder, then next to the scene.
 std::vector<std::string> FrameTextureSearchPath(const Frame& frame) {
     return SearchPath(frame, "texture", {".", SceneFolder(frame)});
 }
 
+// "a surface", "an imager".
+std::string WithArticle(sl::ShaderType type) {
+    const std::string name = sl::ToString(type);
+    return (name[0] == 'i' ? "an " : "a ") + name;
+}
+
 }  // namespace
 
 std::string DefaultShaderFolder() { return GONIO_SHADER_DIR; }
+
+std::vector<std::string> ShaderSearchPath(const Frame& frame) {
+    return SearchPath(frame, "shader", {SceneFolder(frame), DefaultShaderFolder()});
+}
+
+std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
+    sl::ShadingSystem& system, const ShaderInstance& request, sl::ShaderType expected,
+    const M44f& currentFromShader, const Declarations& declarations, Diagnostics& diagnostics) {
+    if (!request.IsSet()) return nullptr;
+    std::shared_ptr<const sl::Shader> shader = system.Load(request.name, request.loc);
+    if (!shader) return nullptr;
+    if (shader->Type() != expected) {
+        diagnostics.Error(request.loc, "\"" + request.name + "\" is " +
+                                           WithArticle(shader->Type()) + " shader, not " +
+                                           WithArticle(expected) + " shader");
+        return nullptr;
+    }
+    auto instance = std::make_shared<sl::ShaderInstance>(shader);
+    instance->ApplyRibParameters(request.params, declarations, currentFromShader, diagnostics);
+    return instance;
+}
 
 FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
     : frame_(frame),
@@ -104,18 +126,11 @@ std::shared_ptr<sl::ShaderInstance> FrameShaders::Instance(const ShaderInstance&
     const std::string key = RequestKey(request);
     auto found = instances_.find(key);
     if (found != instances_.end()) return found->second;
+    // Failed requests are remembered too (as null), so that each is reported once.
     std::shared_ptr<sl::ShaderInstance>& instance = instances_[key];
-    std::shared_ptr<const sl::Shader> shader = system_->Load(request.name, request.loc);
-    if (!shader) return nullptr;
-    if (shader->Type() != expected) {
-        diagnostics_.Error(request.loc, "\"" + request.name + "\" is a " +
-                                            sl::ToString(shader->Type()) + " shader, not a " +
-                                            sl::ToString(expected) + " shader");
-        return nullptr;
-    }
-    instance = std::make_shared<sl::ShaderInstance>(shader);
-    const M44f currentFromShader = request.worldFromShader * CurrentFromWorld();
-    instance->ApplyRibParameters(request.params, declarations_, currentFromShader, diagnostics_);
+    instance = LoadShaderInstance(*system_, request, expected,
+                                  request.worldFromShader * CurrentFromWorld(), declarations_,
+                                  diagnostics_);
     return instance;
 }
 

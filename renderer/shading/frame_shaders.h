@@ -76,4 +76,17 @@ class FrameShaders {
 // The folder of the standard shaders that ship with gonio (the source tree's shaders/).
 std::string DefaultShaderFolder();
 
+// Where shaders are looked for: next to the scene, then among those that ship with gonio
+// (Option "searchpath" "shader" changes it).
+std::vector<std::string> ShaderSearchPath(const Frame& frame);
+
+// The instance a shader request names: the shader from `system`'s search path, checked to be of
+// the `expected` type, with the request's parameters (point-like values move from shader space
+// with `currentFromShader`). A missing shader, a wrong type and a parameter that does not match
+// its declaration are reported at the request's RIB location; a bad parameter keeps its
+// default, the other errors give null, as does an unset request.
+std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
+    sl::ShadingSystem& system, const ShaderInstance& request, sl::ShaderType expected,
+    const M44f& currentFromShader, const Declarations& declarations, Diagnostics& diagnostics);
+
 }  // namespace gonio

@@ -383,7 +383,18 @@ class ConditionParser {
         pos_ += n;
         return true;
     }
+    // Parentheses, ?: and unary operators recurse: a bound on the nesting makes a pathological
+    // expression an error rather than a stack overflow.
+    struct Nested {
+        explicit Nested(ConditionParser& parser) : parser(parser) {
+            if (++parser.nesting_ > kMaxNesting) parser.ok_ = false;
+        }
+        ~Nested() { --parser.nesting_; }
+        ConditionParser& parser;
+    };
     long Ternary() {
+        Nested nested(*this);
+        if (!ok_) return 0;
         long c = Binary(0);
         if (Accept("?")) {
             long a = Ternary();
@@ -444,6 +455,8 @@ class ConditionParser {
         return op == "/" ? a / b : a % b;
     }
     long Unary() {
+        Nested nested(*this);
+        if (!ok_) return 0;
         if (Accept("!")) return !Unary();
         if (Accept("-")) return long(0ul - static_cast<unsigned long>(Unary()));
         if (Accept("+")) return Unary();
@@ -465,9 +478,11 @@ class ConditionParser {
         return 0;
     }
 
+    static constexpr int kMaxNesting = 200;
     const std::string& s_;
     size_t pos_ = 0;
     bool ok_ = true;
+    int nesting_ = 0;
 };
 
 long Preprocessor::EvaluateCondition(const std::string& text, int line) {

@@ -828,6 +828,7 @@ void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
     std::vector<Node*> functions = symbols_.FindFunctions(e->name);
     if (!functions.empty()) {
         if (CheckUserCall(e, functions)) {
+            if (e->hasError) return;
             for (size_t i = 0; i < e->kids.size(); ++i) {
                 Node* formal = e->function->kids[0]->kids[i];
                 if (formal->output) CheckLvalue(e->kids[i], ctx, e->varying);

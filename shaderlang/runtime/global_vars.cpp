@@ -38,7 +38,9 @@ const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"ncomps", BaseType::Float, false, kAll, 0},
     {"time", BaseType::Float, false, kAll, 0},
     {"dtime", BaseType::Float, false, kAll, 0},
-    {"alpha", BaseType::Float, false, kI, kI},
+    // RISpec's Table 12.5 makes alpha uniform, as if each pixel ran alone; an imager here runs
+    // over a batch of pixels, each with its own coverage.
+    {"alpha", BaseType::Float, true, kI, kI},
 };
 
 }  // namespace

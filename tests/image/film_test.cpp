@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <cstring>
@@ -22,13 +23,30 @@ FilmSpec SmallSpec(int xres, int yres, int xsamples, int ysamples, int channels)
     return FilmSpec::FromCropWindow(xres, yres, 0, 1, 0, 1, xsamples, ysamples, channels);
 }
 
+struct TestSample {
+    int px, py;
+    float x, y;
+    std::vector<float> values;
+};
+
+// Splats each sample into the tile of its pixel, tiles in parallel (in whatever order threads
+// take them), as the renderer does.
+void Splat(Film& film, const std::vector<TestSample>& samples) {
+    tbb::parallel_for(0, film.TileCount(), [&](int tile) {
+        FilmTile filmTile = film.StartTile(tile);
+        for (const TestSample& s : samples)
+            filmTile.AddSample(s.px, s.py, s.x, s.y, s.values.data());
+        film.StoreTile(std::move(filmTile));
+    });
+}
+
 using SampleValues = std::function<void(int px, int py, int s, float* values)>;
 
 // Stratified (cell-centred, jittered by a fixed pattern) samples over the whole pixel range.
-void FillFilm(Film& film, const SampleValues& valuesOf) {
+std::vector<TestSample> FieldSamples(const Film& film, const SampleValues& valuesOf) {
     const FilmSpec& spec = film.Spec();
     Imath::Box2i range = film.PixelRange();
-    std::vector<float> values(spec.channels);
+    std::vector<TestSample> samples;
     for (int py = range.min.y; py <= range.max.y; ++py) {
         for (int px = range.min.x; px <= range.max.x; ++px) {
             for (int sy = 0; sy < spec.ysamples; ++sy) {
@@ -36,60 +54,20 @@ void FillFilm(Film& film, const SampleValues& valuesOf) {
                     int s = sy * spec.xsamples + sx;
                     float jx = 0.25f + 0.5f * ((px * 7 + py * 3 + s) % 5) / 5.0f;
                     float jy = 0.25f + 0.5f * ((px * 2 + py * 5 + s) % 7) / 7.0f;
-                    valuesOf(px, py, s, values.data());
-                    film.SetSample(px, py, s, px + (sx + jx) / spec.xsamples,
-                                   py + (sy + jy) / spec.ysamples, values.data());
+                    TestSample sample{px, py, px + (sx + jx) / spec.xsamples,
+                                      py + (sy + jy) / spec.ysamples,
+                                      std::vector<float>(size_t(spec.channels))};
+                    valuesOf(px, py, s, sample.values.data());
+                    samples.push_back(std::move(sample));
                 }
             }
         }
     }
+    return samples;
 }
 
-TEST(FilmSpec, CropWindowRoundsAsRiSpec) {
-    FilmSpec left = FilmSpec::FromCropWindow(640, 480, 0.0f, 0.5f, 0.0f, 1.0f, 2, 2, 5);
-    FilmSpec right = FilmSpec::FromCropWindow(640, 480, 0.5f, 1.0f, 0.0f, 1.0f, 2, 2, 5);
-    EXPECT_EQ(left.xmin, 0);
-    EXPECT_EQ(left.xmax, 319);
-    EXPECT_EQ(right.xmin, 320);
-    EXPECT_EQ(right.xmax, 639);
-    EXPECT_EQ(right.ymin, 0);
-    EXPECT_EQ(right.ymax, 479);
-    // Abutting windows at a fraction that falls inside a pixel still tile without gap or overlap.
-    FilmSpec a = FilmSpec::FromCropWindow(100, 100, 0.0f, 0.333f, 0.25f, 0.755f, 1, 1, 5);
-    FilmSpec b = FilmSpec::FromCropWindow(100, 100, 0.333f, 1.0f, 0.755f, 1.0f, 1, 1, 5);
-    EXPECT_EQ(a.xmax + 1, b.xmin);
-    EXPECT_EQ(a.xmax, 33);
-    EXPECT_EQ(a.ymin, 25);
-    EXPECT_EQ(a.ymax + 1, b.ymin);
-    EXPECT_EQ(a.WindowWidth(), 34);
-}
-
-TEST(FilmSpec, DegenerateCropWindowKeepsOnePixel) {
-    FilmSpec backwards = FilmSpec::FromCropWindow(10, 10, 0.8f, 0.2f, 0.5f, 0.5f, 0, -1, 5);
-    EXPECT_EQ(backwards.WindowWidth(), 1);
-    EXPECT_EQ(backwards.WindowHeight(), 1);
-    EXPECT_EQ(backwards.SamplesPerPixel(), 1);
-    Film film(backwards, PixelFilter());
-    EXPECT_EQ(film.Resolve().pixels.size(), 5u);
-}
-
-TEST(FilmSpec, DepthChannelOnlyWhenThereIsOne) {
-    EXPECT_EQ(SmallSpec(4, 4, 1, 1, 5).depthChannel, kChannelZ);
-    EXPECT_EQ(SmallSpec(4, 4, 1, 1, 4).depthChannel, -1);
-}
-
-TEST(Film, PixelRangeAddsTheFilterMargin) {
-    FilmSpec spec = FilmSpec::FromCropWindow(64, 48, 0.25f, 0.5f, 0.5f, 1.0f, 2, 2, 5);
-    Imath::Box2i box = Film(spec, MakeFilter("box", 1, 1)).PixelRange();
-    EXPECT_EQ(box.min, Imath::V2i(16, 24));
-    EXPECT_EQ(box.max, Imath::V2i(31, 47));
-    // Radius 1: samples up to 1 pixel from a border pixel's centre lie in the next pixel out.
-    Imath::Box2i gaussian = Film(spec, MakeFilter("gaussian", 2, 2)).PixelRange();
-    EXPECT_EQ(gaussian.min, Imath::V2i(15, 23));
-    EXPECT_EQ(gaussian.max, Imath::V2i(32, 48));  // beyond the frame: rendered too
-    Imath::Box2i wide = Film(spec, MakeFilter("catmull-rom", 4, 3)).PixelRange();
-    EXPECT_EQ(wide.min, Imath::V2i(14, 23));
-    EXPECT_EQ(wide.max, Imath::V2i(33, 48));
+void FillFilm(Film& film, const SampleValues& valuesOf) {
+    Splat(film, FieldSamples(film, valuesOf));
 }
 
 class ConstantField : public ::testing::TestWithParam<const char*> {};
@@ -133,13 +111,15 @@ TEST(Film, SingleSampleSpreadsAsTheFilterSays) {
     FilmSpec spec = SmallSpec(9, 9, 1, 1, 4);
     Film film(spec, filter);
     Imath::Box2i range = film.PixelRange();
+    std::vector<TestSample> samples;
     for (int py = range.min.y; py <= range.max.y; ++py) {
         for (int px = range.min.x; px <= range.max.x; ++px) {
-            float v[4] = {0, 0, 0, 0};
+            std::vector<float> v = {0, 0, 0, 0};
             if (px == 4 && py == 4) v[0] = 1.0f;
-            film.SetSample(px, py, 0, px + 0.5f, py + 0.5f, v);
+            samples.push_back({px, py, px + 0.5f, py + 0.5f, v});
         }
     }
+    Splat(film, samples);
     double weightSum = 0.0;
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) weightSum += filter.Evaluate(float(i), float(j));
@@ -168,10 +148,9 @@ TEST(Film, CancelledWeightsFallBackToTheNearestSample) {
     FilmSpec spec = SmallSpec(8, 1, 1, 1, 4);
     Film film(spec, filter);
     const float cx = 3.5f;  // centre of pixel 3
-    float near[4] = {10, 10, 10, 1}, far[4] = {20, 20, 20, 1};
-    float xNear = cx + lo, xFar = cx - 1.5f;
-    film.SetSample(int(std::floor(xNear)), 0, 0, xNear, 0.5f, near);
-    film.SetSample(int(std::floor(xFar)), 0, 0, xFar, 0.5f, far);
+    const float xNear = cx + lo, xFar = cx - 1.5f;
+    Splat(film, {{int(std::floor(xNear)), 0, xNear, 0.5f, {10, 10, 10, 1}},
+                 {int(std::floor(xFar)), 0, xFar, 0.5f, {20, 20, 20, 1}}});
     Image image = film.Resolve();
     EXPECT_FLOAT_EQ(image.At(3, 0)[0], 10.0f);
     // A pixel that no set sample reaches is black.
@@ -195,34 +174,67 @@ TEST(Film, DepthIsTheNearestOfThePixelsOwnSamples) {
     EXPECT_FLOAT_EQ(image.At(1, 0)[kChannelR], 1.0f);
 }
 
-TEST(Film, ResolveIsIdenticalWhateverTheThreadCount) {
+// Tiles are splatted by whichever thread takes them, in any order, and small tiles (5 pixels
+// here, against a 2-pixel filter radius) make most pixels sum several tiles: the image must not
+// change by a bit.
+TEST(Film, ImageIsIdenticalWhateverTheThreadCount) {
     FilmSpec spec = FilmSpec::FromCropWindow(96, 64, 0.1f, 0.9f, 0, 1, 3, 3, 6);
-    Film film(spec, MakeFilter("catmull-rom", 4, 4));
-    FillFilm(film, [](int px, int py, int s, float* v) {
-        for (int c = 0; c < 6; ++c)
-            v[c] = std::sin(0.37f * px + 0.91f * py + 1.3f * s + c) * 100.0f + 1.0f / (1 + c);
-    });
-    Image one, many;
-    {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one = film.Resolve();
-    }
-    {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 8);
-        many = film.Resolve();
-    }
+    auto render = [&](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        Film film(spec, MakeFilter("catmull-rom", 4, 4), 5);
+        FillFilm(film, [](int px, int py, int s, float* v) {
+            for (int c = 0; c < 6; ++c)
+                v[c] = std::sin(0.37f * px + 0.91f * py + 1.3f * s + c) * 100.0f + 1.0f / (1 + c);
+        });
+        return film.Resolve();
+    };
+    const Image one = render(1), many = render(8);
     ASSERT_EQ(one.pixels.size(), many.pixels.size());
     EXPECT_EQ(std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(float)),
               0);
 }
 
-TEST(Film, SamplesOutsideThePixelRangeAreIgnored) {
+// The tile size only changes the order of the sums.
+TEST(Film, TileSizeDoesNotChangeTheImage) {
+    FilmSpec spec = FilmSpec::FromCropWindow(40, 30, 0, 1, 0.2f, 1, 2, 2, 5);
+    auto render = [&](int tileSize) {
+        Film film(spec, MakeFilter("gaussian", 3, 3), tileSize);
+        FillFilm(film, [](int px, int py, int s, float* v) {
+            for (int c = 0; c < 5; ++c) v[c] = std::cos(0.21f * px - 0.5f * py + s + c);
+        });
+        return film.Resolve();
+    };
+    const Image small = render(3), whole = render(1000);
+    ASSERT_EQ(small.pixels.size(), whole.pixels.size());
+    for (size_t i = 0; i < small.pixels.size(); ++i)
+        ASSERT_NEAR(small.pixels[i], whole.pixels[i], 1e-5f) << i;
+}
+
+TEST(Film, TilesCoverThePixelRangeOnce) {
+    FilmSpec spec = SmallSpec(37, 21, 1, 1, 4);
+    Film film(spec, MakeFilter("gaussian", 2, 2), 8);
+    const Imath::Box2i range = film.PixelRange();
+    std::vector<int> covered(size_t(range.size().x + 1) * (range.size().y + 1), 0);
+    for (int tile = 0; tile < film.TileCount(); ++tile) {
+        const Imath::Box2i pixels = film.TilePixels(tile);
+        ASSERT_TRUE(range.intersects(pixels.min) && range.intersects(pixels.max)) << tile;
+        for (int y = pixels.min.y; y <= pixels.max.y; ++y)
+            for (int x = pixels.min.x; x <= pixels.max.x; ++x)
+                ++covered[size_t(y - range.min.y) * (range.size().x + 1) + (x - range.min.x)];
+    }
+    for (int count : covered) ASSERT_EQ(count, 1);
+}
+
+TEST(Film, SamplesOfPixelsOutsideTheTileAreDropped) {
     FilmSpec spec = SmallSpec(4, 4, 1, 1, 4);
-    Film film(spec, MakeFilter("box", 1, 1));
-    float v[4] = {1, 1, 1, 1};
-    film.SetSample(-5, 0, 0, -4.5f, 0.5f, v);
-    film.SetSample(0, 0, 3, 0.5f, 0.5f, v);  // no sample 3 at 1x1
-    Image image = film.Resolve();
+    Film film(spec, MakeFilter("box", 1, 1), 2);
+    FilmTile tile = film.StartTile(0);  // pixels (0..1, 0..1)
+    const float v[4] = {1, 1, 1, 1};
+    tile.AddSample(3, 3, 3.5f, 3.5f, v);
+    tile.AddSample(-5, 0, -4.5f, 0.5f, v);
+    film.StoreTile(std::move(tile));
+    const Image image = film.Resolve();
+    EXPECT_FLOAT_EQ(image.At(3, 3)[0], 0.0f);
     EXPECT_FLOAT_EQ(image.At(0, 0)[0], 0.0f);
 }
 

@@ -438,6 +438,21 @@ def exit_2_on_bad_usage(ws):
     ws.run(["render", "x.rib", "--threads", "-1"], expect_code=2)
 
 
+def run_checks(checks, workspace):
+    """Runs each check on the workspace in turn, printing ok or FAIL with the reason for each and
+    a summary; returns the exit status (1 when any failed)."""
+    failures = 0
+    for check in checks:
+        try:
+            check(workspace)
+            print(f"ok   {check.__name__}")
+        except CheckFailed as error:
+            print(f"FAIL {check.__name__}\n     {error}")
+            failures += 1
+    print(f"{len(checks) - failures} of {len(checks)} checks passed")
+    return 1 if failures else 0
+
+
 def run_batch(gonio, root, checks):
     """Runs the batched checks: collect frames, one render, one read, then each check's asserts.
     Returns [(name, bug, error or None)]."""

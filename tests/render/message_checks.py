@@ -14,7 +14,7 @@ import subprocess
 import sys
 import tempfile
 
-from analytic_checks import CheckFailed, Workspace, expect, read_images
+from analytic_checks import run_checks, Workspace, expect, read_images
 
 SIZE, HALF = 16, 2.0  # an orthographic frame of SIZE² pixels over [-HALF, HALF]²
 RADIUS = 1.5          # the sphere's
@@ -173,21 +173,12 @@ def main():
     parser.add_argument("--gonio", required=True)
     args = parser.parse_args()
     gonio = os.path.abspath(args.gonio)
-    failures = 0
     with tempfile.TemporaryDirectory(prefix="gonio_messages_") as root:
         ws = Workspace(gonio, root)
         for name, source in SHADERS.items():
             with open(ws.path(name), "w") as f:
                 f.write(source + "\n")
-        for check in CHECKS:
-            try:
-                check(ws)
-                print(f"ok   {check.__name__}")
-            except CheckFailed as error:
-                print(f"FAIL {check.__name__}\n     {error}")
-                failures += 1
-    print(f"{len(CHECKS) - failures} of {len(CHECKS)} checks passed")
-    return 1 if failures else 0
+        return run_checks(CHECKS, ws)
 
 
 if __name__ == "__main__":

@@ -85,6 +85,19 @@ TEST(ShadeCheck, OverloadsResolveOnExpectedReturnType) {
     EXPECT_NE(e.find("error: no version of 'normalize' takes (string)"), std::string::npos) << e;
 }
 
+// A call that matches no version of a user function (here one with an output parameter) is
+// an error, not a crash (found by the shader fuzzer).
+TEST(ShadeCheck, UserFunctionWithNoMatchingVersion) {
+    std::string e = Errors(
+        "void f(output float x) { x = 1; }\n"
+        "surface t() {\n"
+        "  f(\"a\");\n"
+        "}\n");
+    EXPECT_NE(e.find("test.sl:3:3: error: no version of function 'f' takes (string)"),
+              std::string::npos)
+        << e;
+}
+
 TEST(ShadeCheck, ControlFlowErrors) {
     std::string e = Errors(
         "surface t() {\n"
@@ -104,6 +117,20 @@ TEST(ShadeCheck, ControlFlowErrors) {
 TEST(ShadeCheck, RecursionIsAnError) {
     std::string e = Errors("float f(float x) { return f(x); }\nsurface t() { Ci = f(1); }\n");
     EXPECT_NE(e.find("error: recursive call of 'f'"), std::string::npos) << e;
+}
+
+// Deeply nested #if expressions are an error, not a stack overflow (found by the fuzzer); a
+// reasonable depth still works.
+TEST(ShadePreprocessor, DeeplyNestedConditionIsAnError) {
+    const std::string deep = "#if " + std::string(5000, '(') + "1" + std::string(5000, ')') +
+                             "\n#endif\nsurface t() {}\n";
+    EXPECT_NE(Errors(deep).find("test.sl:1:1: error: invalid #if expression"), std::string::npos);
+    const std::string unary = "#if " + std::string(5000, '!') + "1\n#endif\nsurface t() {}\n";
+    EXPECT_NE(Errors(unary).find("invalid #if expression"), std::string::npos);
+    testing::CapturedDiagnostics d;
+    const std::string fine =
+        "#if " + std::string(50, '(') + "1" + std::string(50, ')') + "\nsurface t() {}\n#endif\n";
+    EXPECT_TRUE(testing::Compile(fine, d)) << d.Text();
 }
 
 TEST(ShadePreprocessor, DefinesConditionalsAndLineNumbers) {

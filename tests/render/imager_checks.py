@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""Checks of Imager shaders through `gonio render` (issue 3): the standard imager `background`
+composites a colour under the filtered pixels exactly, c + (1 - a)·background with alpha 1,
+before Exposure; an Imager that names a missing shader or a surface shader is reported at its
+RIB line and the frame is still written, without an imager.
+
+    imager_checks.py --gonio build/bin/gonio"""
+
+import argparse
+import os
+import sys
+import tempfile
+
+from analytic_checks import run_checks, Workspace, expect, read_images
+
+SIZE, HALF = 32, 2.0  # an orthographic frame of SIZE² pixels over [-HALF, HALF]²
+PIXEL = 2 * HALF / SIZE
+BACKGROUND = (0.2, 0.4, 0.6)
+COLOUR = (0.9, 0.5, 0.1)  # the sphere's, through the constant surface: Ci = Os·Cs
+
+OPTIONS = f"""Format {SIZE} {SIZE} 1
+PixelSamples 4 4
+PixelFilter "box" 1 1
+Quantize "rgba" 0 0 0 0
+Projection "orthographic"
+ScreenWindow -{HALF} {HALF} -{HALF} {HALF}
+"""
+WORLD = 'Translate 0 0 5\nWorldBegin\nSurface "constant"\nColor [0.9 0.5 0.1]\n' \
+        'Sphere 1 -1 1 360\nWorldEnd\n'
+
+
+def frame(number, display, options=""):
+    return f'FrameBegin {number}\nDisplay "{display}" "tiff" "rgba"\n{OPTIONS}{options}' \
+           f'{WORLD}FrameEnd\n'
+
+
+def pixel_distances(px, py):
+    """The nearest and farthest distance of pixel (px, py)'s square from the frame's centre."""
+    x0, x1 = -HALF + px * PIXEL, -HALF + (px + 1) * PIXEL
+    y0, y1 = HALF - (py + 1) * PIXEL, HALF - py * PIXEL
+    nx, ny = min(max(0, x0), x1), min(max(0, y0), y1)
+    far = max((x * x + y * y) ** 0.5 for x in (x0, x1) for y in (y0, y1))
+    return (nx * nx + ny * ny) ** 0.5, far
+
+
+def close(a, b, tolerance=1e-5):
+    return all(abs(x - y) <= tolerance for x, y in zip(a, b))
+
+
+def check_background_is_exact(ws):
+    background = " ".join(str(c) for c in BACKGROUND)
+    imager = f'Imager "background" "background" [{background}]\n'
+    ws.render(frame(1, "plain.tif") + frame(2, "imager.tif", imager) +
+              frame(3, "exposed.tif", imager + "Exposure 2 1\n"))
+    plain, imaged, exposed = read_images(*(ws.path(f) for f in
+                                           ("plain.tif", "imager.tif", "exposed.tif")))
+    outside = inside = edge = 0
+    for (px, py), was in plain.pixels.items():
+        got, doubled = imaged.pixels[(px, py)], exposed.pixels[(px, py)]
+        near, far = pixel_distances(px, py)
+        where = f"pixel {(px, py)}: {got} (without the imager {was})"
+        if near > 1.001:
+            outside += 1
+            expect(close(was, (0, 0, 0, 0)), f"{where}: the plain render is not empty here")
+            expect(close(got, (*BACKGROUND, 1)), f"{where}, expected the background, alpha 1")
+            # Exposure comes after the imager (RISpec §4.1.2): gain 2 doubles the background.
+            expect(close(doubled, (*(2 * c for c in BACKGROUND), 1)),
+                   f"pixel {(px, py)} with Exposure 2 1: {doubled}, expected twice the "
+                   "background: the imager runs before exposure")
+        elif far < 0.999:
+            inside += 1
+            expect(close(was, (*COLOUR, 1)), f"{where}: the plain sphere is not its colour")
+            expect(close(got, was), f"{where}, expected the sphere unchanged")
+        elif 0.05 < was[3] < 0.95:
+            edge += 1
+            want = [c + (1 - was[3]) * b for c, b in zip(was[:3], BACKGROUND)] + [1]
+            expect(close(got, want), f"{where}, expected c + (1 - a)·background = {want}")
+    expect(outside > 400 and inside > 100 and edge > 20,
+           f"too few pixels checked: {outside} outside, {inside} inside, {edge} on the edge")
+
+
+def check_unusable_imagers_are_reported(ws):
+    with open(ws.path("flat.sl"), "w") as f:
+        f.write("surface flat() { Ci = 1; Oi = 1; }\n")
+    rib = frame(1, "missing.tif", 'Imager "nosuch"\n') + frame(2, "surface.tif", 'Imager "flat"\n')
+    proc = ws.render(rib, name="bad", expect_code=1)
+    lines = rib.splitlines()
+    missing_line = lines.index('Imager "nosuch"') + 1
+    surface_line = lines.index('Imager "flat"') + 1
+    for message in (f"bad.rib:{missing_line}:1: error: cannot find shader 'nosuch'",
+                    f"bad.rib:{surface_line}:1: error: \"flat\" is a surface shader, not an "
+                    "imager shader"):
+        expect(message in proc.stderr, f"expected '{message}' in:\n{proc.stderr}")
+    images = read_images(ws.path("missing.tif"), ws.path("surface.tif"))
+    for image in images:
+        expect(close(image.pixels[(0, 0)], (0, 0, 0, 0)),
+               f"corner pixel {image.pixels[(0, 0)]}: the frame was not written without imager")
+
+
+CHECKS = [check_background_is_exact, check_unusable_imagers_are_reported]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--gonio", required=True)
+    args = parser.parse_args()
+    gonio = os.path.abspath(args.gonio)
+    with tempfile.TemporaryDirectory(prefix="gonio_imager_") as root:
+        return run_checks(CHECKS, Workspace(gonio, root))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
