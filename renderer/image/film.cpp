@@ -106,32 +106,43 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
         float& depth = depth_[PixelIndex(px, py)];
         depth = std::min(depth, values[depthChannel]);
     }
-    // The sample counts for pixel q when -radius <= x - (q + 0.5) < radius.
-    const float xr = film_->Filter().XRadius(), yr = film_->Filter().YRadius();
+    const PixelFilter& filter = film_->Filter();
     const int qxmin = std::max(footprint_.min.x, px - film_->xmargin_);
     const int qxmax = std::min(footprint_.max.x, px + film_->xmargin_);
     const int qymin = std::max(footprint_.min.y, py - film_->ymargin_);
     const int qymax = std::min(footprint_.max.y, py + film_->ymargin_);
+    if (qxmin > qxmax || qymin > qymax) return;
+    // The sample counts for pixel q when -radius <= x - (q + 0.5) < radius; a separable filter's
+    // weight is the product of the column's and the row's.
+    const float xr = filter.XRadius(), yr = filter.YRadius();
+    xOffsets_.clear(), xWeights_.clear();
+    for (int qx = qxmin; qx <= qxmax; ++qx) {
+        const float dx = x - (qx + 0.5f);
+        xOffsets_.push_back(dx);
+        xWeights_.push_back(dx < -xr || dx >= xr ? 0.0f : filter.XWeight(dx));
+    }
     for (int qy = qymin; qy <= qymax; ++qy) {
         const float dy = y - (qy + 0.5f);
         if (dy < -yr || dy >= yr) continue;
+        const float yWeight = filter.YWeight(dy);
         for (int qx = qxmin; qx <= qxmax; ++qx) {
-            const float dx = x - (qx + 0.5f);
+            const int k = qx - qxmin;
+            const float dx = xOffsets_[size_t(k)];
             if (dx < -xr || dx >= xr) continue;
-            AddToPixel(qx, qy, dx, dy, values);
+            const float w =
+                filter.Separable() ? xWeights_[size_t(k)] * yWeight : filter.Evaluate(dx, dy);
+            AddToPixel(qx, qy, dx * dx + dy * dy, w, values);
         }
     }
 }
 
-void FilmTile::AddToPixel(int qx, int qy, float dx, float dy, const float* values) {
+void FilmTile::AddToPixel(int qx, int qy, float distance, float w, const float* values) {
     const size_t pixel = PixelIndex(qx, qy);
     float* nearest = &nearest_[pixel * (1 + channels_)];
-    const float distance = dx * dx + dy * dy;
     if (distance < nearest[0]) {
         nearest[0] = distance;
         std::copy(values, values + channels_, nearest + 1);
     }
-    const float w = film_->Filter().Evaluate(dx, dy);
     if (w == 0.0f) return;
     weights_[2 * pixel] += w;
     weights_[2 * pixel + 1] += std::fabs(w);

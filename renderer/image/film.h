@@ -134,7 +134,8 @@ class FilmTile {
         return size_t(py - footprint_.min.y) * size_t(footprint_.max.x - footprint_.min.x + 1) +
                size_t(px - footprint_.min.x);
     }
-    void AddToPixel(int qx, int qy, float dx, float dy, const float* values);
+    // Adds a sample at squared distance `distance` from the pixel's centre with weight w.
+    void AddToPixel(int qx, int qy, float distance, float w, const float* values);
 
     const Film* film_ = nullptr;
     int index_ = -1;
@@ -145,6 +146,8 @@ class FilmTile {
     std::vector<double> weights_;  // sum of weights, sum of |weights|: 2 per pixel
     std::vector<float> nearest_;   // distance², then the channels: 1 + channels_ per pixel
     std::vector<float> depth_;     // per footprint pixel
+    // Scratch for AddSample: a sample's offsets from, and weights for, a row of pixels.
+    std::vector<float> xOffsets_, xWeights_;
 };
 
 }  // namespace gonio

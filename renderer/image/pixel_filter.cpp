@@ -70,35 +70,40 @@ const std::string& PixelFilter::Name() const {
     return kNames[static_cast<int>(kind_)];
 }
 
-float PixelFilter::Evaluate(float dx, float dy) const {
-    float xr = XRadius(), yr = YRadius();
-    if (std::fabs(dx) > xr || std::fabs(dy) > yr) return 0.0f;
+float PixelFilter::Weight1D(float d, float width) const {
+    const float radius = 0.5f * width;
+    if (std::fabs(d) > radius) return 0.0f;
     switch (kind_) {
         case Kind::Box:
+        case Kind::Disk:
             return 1.0f;
         case Kind::Triangle:
             // The RISpec's sample code divides (1 - |x|) by the half width, which is not a
             // triangle of the given width; this is the tent the text describes.
-            return (1.0f - std::fabs(dx) / xr) * (1.0f - std::fabs(dy) / yr);
+            return 1.0f - std::fabs(d) / radius;
         case Kind::Gaussian: {
-            // RiGaussianFilter (RISpec App. E): exp(-2 ((2x/xw)^2 + (2y/yw)^2)).
-            float x = dx / xr, y = dy / yr;
-            return std::exp(-2.0f * (x * x + y * y));
+            // RiGaussianFilter (RISpec App. E): exp(-2 ((2x/xw)^2 + (2y/yw)^2)), a product of
+            // exp(-2 (2x/xw)^2) and the same in y.
+            const float x = d / radius;
+            return std::exp(-2.0f * x * x);
         }
         case Kind::CatmullRom:
             // In pixels, not scaled to the width: "catmull-rom 4 4" covers the whole cubic and
             // a narrower width truncates it, as in the RenderMan binding.
-            return CatmullRom1D(dx) * CatmullRom1D(dy);
+            return CatmullRom1D(d);
         case Kind::Sinc:
-            return WindowedSinc1D(dx, xwidth_) * WindowedSinc1D(dy, ywidth_);
-        case Kind::Disk: {
-            float x = dx / xr, y = dy / yr;
-            return x * x + y * y <= 1.0f ? 1.0f : 0.0f;
-        }
+            return WindowedSinc1D(d, width);
         case Kind::Mitchell:
-            return Mitchell1D(2.0f * dx / xr) * Mitchell1D(2.0f * dy / yr);
+            return Mitchell1D(2.0f * d / radius);
     }
     return 0.0f;
+}
+
+float PixelFilter::Evaluate(float dx, float dy) const {
+    if (Separable()) return XWeight(dx) * YWeight(dy);
+    // The disk.
+    const float x = dx / XRadius(), y = dy / YRadius();
+    return x * x + y * y <= 1.0f ? 1.0f : 0.0f;
 }
 
 }  // namespace gonio

@@ -24,11 +24,20 @@ class PixelFilter {
     // (catmull-rom, sinc, mitchell lobes); 0 outside the footprint.
     float Evaluate(float dx, float dy) const;
 
+    // Every filter but the disk is a product of a function of dx and one of dy: then
+    // Evaluate(dx, dy) == XWeight(dx) * YWeight(dy), and a film can weight a sample's row and
+    // column of pixels once instead of each pixel.
+    bool Separable() const { return kind_ != Kind::Disk; }
+    float XWeight(float dx) const { return Weight1D(dx, xwidth_); }
+    float YWeight(float dy) const { return Weight1D(dy, ywidth_); }
+
     float XRadius() const { return xwidth_ * 0.5f; }
     float YRadius() const { return ywidth_ * 0.5f; }
     const std::string& Name() const;
 
   private:
+    float Weight1D(float d, float width) const;
+
     enum class Kind { Box, Triangle, Gaussian, CatmullRom, Sinc, Disk, Mitchell };
     PixelFilter(Kind kind, float xwidth, float ywidth)
         : kind_(kind), xwidth_(xwidth), ywidth_(ywidth) {}
