@@ -84,7 +84,7 @@ bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagno
     }
     if (!CheckWritable(output, options.loc, diagnostics)) return false;
 
-    const RayScene scene(frame, diagnostics);
+    const RayScene scene(frame, diagnostics, RayScene::Traversal::kFast);
     const MicroBrdfTable brdfs = BuildMicroBrdfTable(frame, diagnostics);
     PhotonTraceSettings trace;
     trace.paths = static_cast<uint64_t>(options.rays);

@@ -178,6 +178,7 @@ struct RayScene::Impl {
     std::vector<SceneLevel> definitions;
     std::vector<InstancePlacement> instances;
 
+    RTCSceneFlags sceneFlags = RTC_SCENE_FLAG_ROBUST;  // of every Embree scene it makes
     explicit Impl(Diagnostics& d) : diagnostics(d) {}
     ~Impl() {
         for (SceneLevel& level : definitions) rtcReleaseScene(level.scene);
@@ -465,14 +466,15 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
     Attach(level, g, std::move(record));
 }
 
-RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
+RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics, Traversal traversal)
     : impl_(std::make_unique<Impl>(diagnostics)) {
     Impl& s = *impl_;
+    s.sceneFlags = traversal == Traversal::kRobust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
     s.colorComponents = frame.options.colorComponents;
     s.device = rtcNewDevice(nullptr);
     rtcSetDeviceErrorFunction(s.device, ReportEmbreeError, &diagnostics);
     s.top.scene = rtcNewScene(s.device);
-    rtcSetSceneFlags(s.top.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(s.top.scene, s.sceneFlags);
     s.shutterOpen = frame.options.shutterOpen;
     s.shutterClose = std::max(frame.options.shutterClose, frame.options.shutterOpen);
     for (const SceneShape& shape : frame.shapes) {
@@ -502,7 +504,7 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics)
 int RayScene::Impl::NewLevel(const std::vector<const SceneShape*>& shapes, bool inObjectSpace) {
     SceneLevel level;
     level.scene = rtcNewScene(device);
-    rtcSetSceneFlags(level.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(level.scene, sceneFlags);
     for (const SceneShape* shape : shapes)
         AddShape(level, *shape, inObjectSpace ? M44f() : shape->worldFromObject);
     rtcCommitScene(level.scene);

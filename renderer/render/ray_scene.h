@@ -40,7 +40,15 @@ struct LeanSurfacePoint {
 
 class RayScene {
   public:
-    RayScene(const Frame& frame, Diagnostics& diagnostics);
+    // Embree's robust traversal (RTC_SCENE_FLAG_ROBUST) gives up some speed so that rays
+    // through the shared edges and vertices of a mesh are not missed: a camera ray slipping
+    // through shows as a speck. The photon tracer counts every photon that slips below the
+    // surface, and 3 M paths through the periodic grass tile gave the same counts either way
+    // (docs/brdflight.md), so it takes the faster default traversal.
+    enum class Traversal { kRobust, kFast };
+
+    RayScene(const Frame& frame, Diagnostics& diagnostics,
+             Traversal traversal = Traversal::kRobust);
     ~RayScene();
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;

@@ -47,7 +47,7 @@ inline Frame ParseFrame(const std::string& rib) {
 
 inline PhotonTraceResult TraceFrame(const Frame& frame, const PhotonTraceSettings& settings) {
     Diagnostics diagnostics;
-    const RayScene scene(frame, diagnostics);
+    const RayScene scene(frame, diagnostics, RayScene::Traversal::kFast);  // as BRDFLight does
     return TracePhotons(frame, scene, BuildMicroBrdfTable(frame, diagnostics), settings);
 }
 
