@@ -43,10 +43,13 @@ struct LightResult {
     std::vector<float> Cl;     // ncomps × n
     std::vector<float> Ol;     // ncomps × n
     std::vector<uint8_t> lit;  // per point: 1 if the light's illuminate/solar reached it
-    bool ambient = false;      // a light without illuminate or solar: only ambient() sees it
-    bool atInfinity = false;   // lit by solar(): L is a direction, the light infinitely far
-    std::string category;      // the light's __category parameter
-    int shaderIndex = -1;      // which light shader instance, for lightsource() queries
+    // Empty, or per point 1 where solar() without an axis lit it: light from all directions,
+    // with no L of its own (L is 0); the surface side takes L along its axis (see OpIllumNext).
+    std::vector<uint8_t> fromAllDirections;
+    bool ambient = false;     // a light without illuminate or solar: only ambient() sees it
+    bool atInfinity = false;  // lit by solar(): L is a direction, the light infinitely far
+    std::string category;     // the light's __category parameter
+    int shaderIndex = -1;     // which light shader instance, for lightsource() queries
 
     // The light shader's parameters as it left them, for lightsource(); the renderer fills
     // them only for batches whose shaders call lightsource().
@@ -92,6 +95,16 @@ class ShadingContext {
     // given (surface shader's) P; cached by the renderer so that several diffuse()/specular()/
     // illuminance uses in one shader run evaluate each light once.
     virtual const std::vector<LightResult>& Lights() = 0;
+
+    // The lights evaluated at other positions `P` (3 × n, current space; light shaders see them
+    // as Ps): illuminance(P', ...) with P' other than the surface's P (RISpec §13.3.1: the
+    // position is where light is gathered). Only the `active` points (nullptr: all) matter.
+    // Not cached: the interpreter calls it only when P' differs from P. The default suits
+    // contexts whose lights do not depend on position (none at all, or fixed test lights).
+    virtual const std::vector<LightResult>& LightsAt(const float* P, const uint8_t* active) {
+        (void)P, (void)active;
+        return Lights();
+    }
 
     // Filtered texture lookup of `channels` channels starting at `firstChannel`, per point, at
     // (s, t) with the four-corner footprint when ds/dt are given (may be null). Options are the

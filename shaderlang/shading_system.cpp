@@ -530,6 +530,8 @@ bool ShaderExecutor::RunLight(ShaderInstance& instance, const ShaderGlobals& glo
     result->ambient = instance.Master().IsAmbientLight();
     result->atInfinity = x.solar;
     result->lit = result->ambient ? std::vector<uint8_t>(size_t(n), 1) : x.lit;
+    result->fromAllDirections.clear();
+    if (x.anyAllDirections && !result->ambient) result->fromAllDirections = x.allDirections;
     result->category = instance.StringParameter("__category");
     return true;
 }

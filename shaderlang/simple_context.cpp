@@ -27,11 +27,22 @@ bool SimpleShadingContext::CurrentFromSpace(const std::string& space, int, Imath
 
 const std::vector<LightResult>& SimpleShadingContext::Lights() {
     if (lightsValid_) return lightResults_;
-    lightResults_.clear();
-    // The light shaders see the surface points as Ps; their own P is the origin.
+    RunLights(globals_.P, &lightResults_);
+    lightsValid_ = true;
+    return lightResults_;
+}
+
+const std::vector<LightResult>& SimpleShadingContext::LightsAt(const float* P, const uint8_t*) {
+    RunLights(P, &movedLightResults_);
+    return movedLightResults_;
+}
+
+void SimpleShadingContext::RunLights(const float* P, std::vector<LightResult>* results) {
+    results->clear();
+    // The light shaders see the given points as Ps; their own P is the origin.
     ShaderGlobals g;
     g.n = n_;
-    g.Ps = globals_.P;
+    g.Ps = P;
     g.E[0] = globals_.E[0], g.E[1] = globals_.E[1], g.E[2] = globals_.E[2];
     g.time = globals_.time;
     for (size_t i = 0; i < lights_.size(); ++i) {
@@ -39,10 +50,8 @@ const std::vector<LightResult>& SimpleShadingContext::Lights() {
         lightExecutor_.RunLight(*lights_[i], g, *this, &result);
         result.shaderIndex = int(i);
         CaptureLightParameters(*lights_[i], lightExecutor_, n_, &result);
-        lightResults_.push_back(std::move(result));
+        results->push_back(std::move(result));
     }
-    lightsValid_ = true;
-    return lightResults_;
 }
 
 bool SimpleShadingContext::Texture(const std::string& name, int, int channels, const float*,

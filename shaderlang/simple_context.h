@@ -27,6 +27,7 @@ class SimpleShadingContext : public ShadingContext {
 
     bool CurrentFromSpace(const std::string& space, int point, Imath::M44f* m) const override;
     const std::vector<LightResult>& Lights() override;
+    const std::vector<LightResult>& LightsAt(const float* P, const uint8_t* active) override;
     bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
                  const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                  const float* dtdy, const uint8_t* active, float* out) override;
@@ -51,12 +52,15 @@ class SimpleShadingContext : public ShadingContext {
     std::vector<int>& VNeighbourTable() { return vNeighbours_; }
 
   private:
+    void RunLights(const float* P, std::vector<LightResult>* results);
+
     Diagnostics& diagnostics_;
     std::FILE* printSink_;
     std::vector<std::shared_ptr<ShaderInstance>> lights_;
     ShaderGlobals globals_;
     bool lightsValid_ = false;
-    std::vector<LightResult> lightResults_;
+    std::vector<LightResult> lightResults_;       // at the batch's P
+    std::vector<LightResult> movedLightResults_;  // LightsAt's
     std::vector<int> uNeighbours_, vNeighbours_;
     ShaderExecutor lightExecutor_;
 };

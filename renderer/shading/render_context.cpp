@@ -83,22 +83,45 @@ bool RenderContext::CurrentFromSpace(const std::string& space, int point, M44f* 
 const std::vector<sl::LightResult>& RenderContext::Lights() {
     if (lightsValid_) return lights_;
     lightsValid_ = true;
-    lights_.clear();
+    EvaluateLights(currentP_, nullptr, &lights_);
+    return lights_;
+}
+
+// illuminance(P', ...) away from the surface's P: the lights run again with P' as their Ps
+// (RISpec §13.3.1), for the batch's active points only; the cached lights_ stay as they are.
+const std::vector<sl::LightResult>& RenderContext::LightsAt(const float* P, const uint8_t* active) {
+    EvaluateLights(P, active, &movedLights_);
+    return movedLights_;
+}
+
+// The main points' copies of `P` (3 × MainCount()) and which of them to light: a main point
+// whose neighbour point is active counts, so that derivatives see its lights.
+const float* RenderContext::MainPoints(const float* P, const uint8_t* active) {
+    const int all = n_, main = MainCount();
+    mainActive_.assign(size_t(main), 1);
+    if (active)
+        for (int i = 0; i < main; ++i)
+            mainActive_[i] =
+                active[i] || (main < all && (active[main + i] || active[2 * main + i]));
+    if (main == all) return P;
+    mainP_.resize(3 * size_t(main));
+    for (int c = 0; c < 3; ++c)
+        std::copy(P + size_t(c) * all, P + size_t(c) * all + main,
+                  mainP_.begin() + size_t(c) * main);
+    return mainP_.data();
+}
+
+void RenderContext::EvaluateLights(const float* P, const uint8_t* active,
+                                   std::vector<sl::LightResult>* results) {
+    results->clear();
     const std::vector<FrameLight>& lights = shaders_.Lights();
     const std::vector<SceneLight>& sceneLights = shaders_.GetFrame().lights;
     const ShaderInstance* surfaceShader = shader_;
     // Neighbour points share their main point's lights: they lie a pixel away, and running the
     // lights and their shadow rays for them would triple the cost.
-    const int all = n_, main = MainCount();
-    lightP_ = currentP_;
-    if (main < all) {
-        mainP_.resize(3 * size_t(main));
-        for (int c = 0; c < 3; ++c)
-            std::copy(currentP_ + size_t(c) * all, currentP_ + size_t(c) * all + main,
-                      mainP_.begin() + size_t(c) * main);
-        lightP_ = mainP_.data();
-    }
-    n_ = main;
+    const int all = n_;
+    lightP_ = MainPoints(P, active);
+    n_ = MainCount();
     for (int index : batch_->attributes->activeLights) {
         const FrameLight& light = lights[index];
         if (!light.instance) continue;
@@ -111,31 +134,39 @@ const std::vector<sl::LightResult>& RenderContext::Lights() {
         result.shaderIndex = index;
         if (captureLights_)
             sl::CaptureLightParameters(*light.instance, lightExecutor_, n_, &result);
+        if (active)
+            for (int i = 0; i < n_; ++i) result.lit[i] &= mainActive_[i];
         if (light.castsShadows && !result.ambient) TraceShadows(&result);
-        lights_.push_back(std::move(result));
+        results->push_back(std::move(result));
     }
     n_ = all;
-    for (sl::LightResult& result : lights_) {
-        ShareWithNeighbours(&result.L, 3);
-        ShareWithNeighbours(&result.Cl, colorComponents_);
-        ShareWithNeighbours(&result.Ol, colorComponents_);
-        ShareWithNeighbours(&result.lit, 1);
-        for (sl::LightResult::Parameter& p : result.parameters)
-            if (p.varying) ShareWithNeighbours(&p.floats, p.width);
-    }
+    for (sl::LightResult& result : *results) ShareLightWithNeighbours(&result);
     shader_ = surfaceShader;
-    return lights_;
+}
+
+void RenderContext::ShareLightWithNeighbours(sl::LightResult* result) const {
+    ShareWithNeighbours(&result->L, 3);
+    ShareWithNeighbours(&result->Cl, colorComponents_);
+    ShareWithNeighbours(&result->Ol, colorComponents_);
+    ShareWithNeighbours(&result->lit, 1);
+    ShareWithNeighbours(&result->fromAllDirections, 1);
+    for (sl::LightResult::Parameter& p : result->parameters)
+        if (p.varying) ShareWithNeighbours(&p.floats, p.width);
 }
 
 // A point whose way to the light is blocked receives nothing from it. L runs from the surface
 // point to the light, so the shadow ray ends just before L's tip; for a solar light L is only a
-// direction, and the ray goes on for ever.
+// direction, and the ray goes on for ever. Light from all directions (solar() without an axis)
+// is not shadowed: no one ray stands for it.
 void RenderContext::TraceShadows(sl::LightResult* light) const {
     // Shadows are traced at the shutter's opening: points of a batch have no common time.
     const float time = shaders_.GetFrame().options.shutterOpen;
     const float end = light->atInfinity ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
+    const uint8_t* all =
+        light->fromAllDirections.empty() ? nullptr : light->fromAllDirections.data();
     for (int i = 0; i < n_; ++i) {
-        if (!light->lit[i]) continue;
+        // Light from all directions has no one direction to test (see the docs).
+        if (!light->lit[i] || (all && all[i])) continue;
         V3f L = ToV3(light->L.data(), n_, i), P = ToV3(lightP_, n_, i);
         V3f org, dir;
         worldFromCurrent_.multVecMatrix(P, org);
@@ -156,17 +187,14 @@ bool RenderContext::Texture(const std::string& name, int firstChannel, int chann
     return ok;
 }
 
+// The direction is used as the shader gives it: RISpec §15.7.2 leaves the map's coordinate
+// system to the shader, whose job it is to transform D into the space the map was made in
+// (the standard shinymetal does D = vtransform("world", D)). Transforming here as well would
+// turn the reflection with the camera.
 bool RenderContext::Environment(const std::string& name, int firstChannel, int channels,
                                 const float* directions, const uint8_t* active, float* out) {
-    // The shader gives directions in current space; environment maps are indexed in world.
-    std::vector<float> world(3 * size_t(n_));
-    for (int i = 0; i < n_; ++i) {
-        V3f d;
-        worldFromCurrent_.multDirMatrix(ToV3(directions, n_, i), d);
-        world[i] = d.x, world[n_ + i] = d.y, world[2 * n_ + i] = d.z;
-    }
-    const bool ok = textures_.Environment(FindTexture(name), firstChannel, channels, n_,
-                                          world.data(), active, out);
+    const bool ok = textures_.Environment(FindTexture(name), firstChannel, channels, n_, directions,
+                                          active, out);
     if (!ok)
         RuntimeWarning("environment " + name,
                        "environment \"" + name + "\": " + textures_.LastError());

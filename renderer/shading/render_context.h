@@ -79,6 +79,7 @@ class RenderContext : public sl::ShadingContext {
     bool TextureInfo(const std::string& name, const std::string& dataname,
                      std::vector<float>* floats, std::string* text) override;
     const std::vector<sl::LightResult>& Lights() override;
+    const std::vector<sl::LightResult>& LightsAt(const float* P, const uint8_t* active) override;
     bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
                  const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                  const float* dtdy, const uint8_t* active, float* out) override;
@@ -107,6 +108,12 @@ class RenderContext : public sl::ShadingContext {
     }
 
   private:
+    // Runs the lights for the main points at positions P (3 × n, current space) into
+    // `results`, sharing them with the neighbour points; `active` (may be null) limits them.
+    void EvaluateLights(const float* P, const uint8_t* active,
+                        std::vector<sl::LightResult>* results);
+    const float* MainPoints(const float* P, const uint8_t* active);
+    void ShareLightWithNeighbours(sl::LightResult* result) const;
     void TraceShadows(sl::LightResult* light) const;
     // The points whose lights and traced rays are computed (the rest share them).
     int MainCount() const { return neighbours_ ? neighbours_->mainCount : n_; }
@@ -129,7 +136,9 @@ class RenderContext : public sl::ShadingContext {
     std::vector<float> mainP_;
     const BatchNeighbours* neighbours_ = nullptr;
     const ShaderInstance* shader_ = nullptr;
-    std::vector<sl::LightResult> lights_;
+    std::vector<sl::LightResult> lights_;       // at the surface's P, cached per batch
+    std::vector<sl::LightResult> movedLights_;  // LightsAt's, per call
+    std::vector<uint8_t> mainActive_;
     bool lightsValid_ = false;
     std::vector<int> noNeighbours_;
     M44f worldFromCurrent_;

@@ -369,7 +369,12 @@ void CodeGenerator::LightLoop(Node* s) {
         size_t first = category ? 1 : 0;
         int axis = args.size() - first == 3 ? regs[first + 1] : -1;
         int angle = args.size() - first == 3 ? regs[first + 2] : -1;
-        Emit(Op::IllumBegin, {cat, axis, angle}, entry);
+        // The position: the lights are evaluated there (the surface's cached lights when it is
+        // the surface's P). The surface's N aims lights from all directions when there is no
+        // axis (OpIllumNext).
+        const int position = regs[first];
+        if (axis < 0 && FindGlobal("N", checker_.Type()) >= 0) GlobalReg(kGlobalN);
+        Emit(Op::IllumBegin, {cat, axis, angle, position}, entry);
         const int region = PushRegion(-1, true);
         depth_ = entry;
         int nextAt = Emit(Op::IllumNext, {cat, axis, angle}, entry);

@@ -3,6 +3,7 @@
 // They sum over ShadingContext::Lights() as the spec's reference code sums over an
 // illuminance(P, N, PI/2) loop: a non-ambient light counts at a point when its illuminate/solar
 // reached the point and normalize(L) lies within 90° of N (N·L ≥ 0, the cone test Aqsis does).
+// A light from all directions (solar() without an axis) counts with L = N.
 // L is normalised per light; N and V are used as given, as in the spec's code.
 //
 // The specular exponent is 8/roughness, as in Aqsis 1.8 (which emulates BMRT's prmanspecular):
@@ -75,13 +76,24 @@ void SumOverLights(const BuiltinCall& call, const FloatArg& normalArg, Weight we
         const float *Lx = light.L.data(), *Ly = Lx + n, *Lz = Ly + n;
         const float* Cl = light.Cl.data();
         const uint8_t* lit = light.lit.empty() ? nullptr : light.lit.data();
-        ForEachPoint(call, [&](int p) {
-            if (lit && !lit[p]) return;
-            const V3 ln = Normalized(V3(Lx[p], Ly[p], Lz[p]));
-            const V3 normal = normals(p);
+        auto add = [&](int p, const V3& ln, const V3& normal) {
             if (Dot(ln, normal) < 0.0f) return;
             const float w = weight(p, ln, normal);
             for (int c = 0; c < width; ++c) out[c * outPlane + p * outStep] += w * Cl[c * n + p];
+        };
+        if (light.fromAllDirections.empty()) {
+            ForEachPoint(call, [&](int p) {
+                if (!lit || lit[p]) add(p, Normalized(V3(Lx[p], Ly[p], Lz[p])), normals(p));
+            });
+            continue;
+        }
+        // Light from all directions (solar() without an axis) arrives along N itself, as it
+        // would along an illuminance loop's axis (see OpIllumNext).
+        const uint8_t* all = light.fromAllDirections.data();
+        ForEachPoint(call, [&](int p) {
+            if (lit && !lit[p]) return;
+            const V3 normal = normals(p);
+            add(p, Normalized(all[p] ? normal : V3(Lx[p], Ly[p], Lz[p])), normal);
         });
     }
 }

@@ -1,9 +1,9 @@
 // Message passing and information built-ins (RISpec §15.8). surface(), displacement() and
 // atmosphere() read a parameter of the batch's shader of that kind (ShadingContext::
 // ShaderParameter); lightsource() reads one of the light that the enclosing illuminance loop
-// runs for. attribute, option and rendererinfo are answered by the ShadingContext. Each returns
-// 1 and fills its output when the name exists with that type, else returns 0 and leaves the
-// output unchanged.
+// runs for; incident() and opposite() find no volume shader (none runs). attribute, option and
+// rendererinfo are answered by the ShadingContext. Each returns 1 and fills its output when the
+// name exists with that type, else returns 0 and leaves the output unchanged.
 
 #include <vector>
 
@@ -107,12 +107,28 @@ void MessageKernel(const BuiltinCall& call) {
     });
 }
 
+// incident() and opposite() read the interior or exterior volume shader on either side of the
+// surface (RISpec §15.8). gonio records Interior and Exterior requests but runs no such shaders,
+// so there is never one to ask: 0, and the output is left unchanged.
+void NoVolumeShaderKernel(const BuiltinCall& call) {
+    ForEachPoint(call, [&](int p) { call.result.At(0, p) = 0.0f; });
+}
+
+const char* const kMessageOutputs[] = {"F", "S",   "C",   "P",   "V",   "N",
+                                       "M", "F[]", "C[]", "P[]", "V[]", "N[]"};
+
 template <MessageSource Source>
 void AddMessageRows(BuiltinList* list, const char* name) {
     // The values differ per point: the result is varying even for uniform arguments, and a
     // variable the message fills is inferred varying unless declared uniform.
-    for (const char* out : {"F", "S", "C", "P", "V", "N", "M", "F[]", "C[]", "P[]", "V[]", "N[]"}) {
+    for (const char* out : kMessageOutputs) {
         list->Add(name, "f", std::string("s") + out, MessageKernel<Source>, kVaryingResult);
+    }
+}
+
+void AddVolumeMessageRows(BuiltinList* list, const char* name) {
+    for (const char* out : kMessageOutputs) {
+        list->Add(name, "f", std::string("s") + out, NoVolumeShaderKernel, kVaryingResult);
     }
 }
 
@@ -123,6 +139,8 @@ void AddMessageBuiltins(BuiltinList* list) {
     AddMessageRows<MessageSource::Displacement>(list, "displacement");
     AddMessageRows<MessageSource::Atmosphere>(list, "atmosphere");
     AddMessageRows<MessageSource::Light>(list, "lightsource");
+    AddVolumeMessageRows(list, "incident");
+    AddVolumeMessageRows(list, "opposite");
     AddInfoRows<InfoSource::Attribute>(list, "attribute");
     AddInfoRows<InfoSource::Option>(list, "option");
     AddInfoRows<InfoSource::RendererInfo>(list, "rendererinfo");

@@ -72,6 +72,8 @@ void ExecState::Prepare(const Program& p, int points, int ncomps) {
         e.all = true;
     }
     lit.assign(size_t(n), 0);
+    allDirections.assign(size_t(n), 0);
+    anyAllDirections = false;
     illuminated = false;
     solar = false;
     lights = nullptr;

@@ -67,8 +67,12 @@ struct ExecState final : GlobalsView {
     const std::vector<LightResult>* lights = nullptr;
     int lightIndex = -1;
     std::vector<uint8_t> lit;
+    std::vector<float> illuminancePosition;  // a uniform illuminance position, replicated
     bool illuminated = false;
     bool solar = false;  // a solar() statement lit some point: the light is at infinity
+    // Per point: solar() without an axis lit it (light from all directions, no L of its own).
+    std::vector<uint8_t> allDirections;
+    bool anyAllDirections = false;
 
     RegRef Reg(int r) const {
         const Register& info = program->regs[r];

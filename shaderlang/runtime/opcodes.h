@@ -11,13 +11,14 @@
 //   Exit          clears the active points of entry[depth] in entries extra..depth (break,
 //                 continue, return; jump = the region left, for detail inference)
 //   Enter         entry[extra] = entry[extra-1]       (a function body)
-//   IllumBegin    category?, axis?, angle? (args 0-2, -1 when absent): start the light loop;
-//                 entry[extra] = entry[extra-1]
+//   IllumBegin    category?, axis?, angle?, position (args 0-3, -1 when absent): start the
+//                 light loop, lights evaluated at the position; entry[extra] = entry[extra-1]
 //   IllumNext     next light whose category matches: L, Cl, Ol loaded, entry[extra+1] =
 //                 entry[extra] & lit & cone; no light left: go to jump
 //   Illuminate    from, axis?, angle?: L = Ps - from, entry[extra] = entry[extra-1] & cone, lit
 //                 |= entry[extra]; none: go to jump
-//   Solar         axis?, angle?: L = axis; entry[extra] = entry[extra-1]; lit |= entry[extra]
+//   Solar         axis?, angle?: L = axis (none: light from all directions, L = 0);
+//                 entry[extra] = entry[extra-1]; lit |= entry[extra]
 //   Jump          go to jump
 // Triple d, a, b, c builds a point, vector, normal or 3-component colour from floats; SetComp
 // d, v writes component `extra` of d (longer tuples).

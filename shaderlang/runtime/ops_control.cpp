@@ -154,6 +154,46 @@ bool ColorToRgb(const std::string& space, const Imath::V3f& c, Imath::V3f* rgb) 
     return true;
 }
 
+// Whether an illuminance position register holds the surface's own P at every active point:
+// then the context's cached lights serve (RISpec §13.3.1 gathers light at the given position).
+bool IsSurfaceP(const ExecState& x, int positionReg, int entry) {
+    const int Preg = x.program->globals[kGlobalP];
+    if (positionReg < 0 || positionReg == Preg) return true;
+    if (Preg < 0) return false;
+    const RegRef at = x.Reg(positionReg), P = x.Reg(Preg);
+    const MaskEntry& e = x.masks[entry];
+    for (int i = 0; i < x.n; ++i) {
+        if (!e.all && !e.bits[i]) continue;
+        for (int c = 0; c < 3; ++c)
+            if (at.Plane(c)[at.varying ? i : 0] != P.Plane(c)[P.varying ? i : 0]) return false;
+    }
+    return true;
+}
+
+// The position as 3 planes of n floats (a uniform point is replicated).
+const float* PositionPlanes(ExecState& x, int positionReg) {
+    const RegRef at = x.Reg(positionReg);
+    if (at.varying) return at.data;
+    x.illuminancePosition.resize(3 * size_t(x.n));
+    for (int c = 0; c < 3; ++c)
+        std::fill_n(x.illuminancePosition.begin() + size_t(c) * x.n, x.n, at.data[c]);
+    return x.illuminancePosition.data();
+}
+
+// L for the points a light from all directions (solar() without an axis) reached: along the
+// loop's axis, else along the surface's N, so that it counts fully wherever it is gathered.
+void AimAllDirectionsLight(ExecState& x, const LightResult& light, const RegRef* axis) {
+    const int Lreg = x.program->globals[kGlobalL];
+    const int Nreg = x.program->globals[kGlobalN];
+    if (light.fromAllDirections.empty() || Lreg < 0 || (!axis && Nreg < 0)) return;
+    const RegRef L = x.Reg(Lreg), along = axis ? *axis : x.Reg(Nreg);
+    for (int i = 0; i < x.n; ++i) {
+        if (!light.fromAllDirections[i]) continue;
+        const Imath::V3f d = Triple(along, i);
+        for (int c = 0; c < 3; ++c) L.Plane(c)[i] = d[c];
+    }
+}
+
 }  // namespace
 
 int SetMask(ExecState& x, int to, int from, const RegRef* cond, bool negate) {
@@ -226,9 +266,17 @@ void OpExit(ExecState& x, const Instr& in) {
 }
 
 void OpIllumBegin(ExecState& x, const Instr& in) {
-    x.lights = x.context ? &x.context->Lights() : nullptr;
-    x.lightIndex = -1;
     SetMask(x, in.extra, in.extra - 1, nullptr, false);
+    x.lightIndex = -1;
+    x.lights = nullptr;
+    if (!x.context) return;
+    const int position = in.argCount > 3 ? in.args[3] : -1;
+    if (IsSurfaceP(x, position, in.extra)) {
+        x.lights = &x.context->Lights();
+        return;
+    }
+    const MaskEntry& e = x.masks[in.extra];
+    x.lights = &x.context->LightsAt(PositionPlanes(x, position), e.all ? nullptr : e.bits.data());
 }
 
 void OpIllumNext(ExecState& x, const Instr& in) {
@@ -248,9 +296,11 @@ void OpIllumNext(ExecState& x, const Instr& in) {
             angle = x.Reg(in.args[2]);
         }
         const int n = x.n;
+        const uint8_t* all =
+            light.fromAllDirections.empty() ? nullptr : light.fromAllDirections.data();
         int active = Restrict(x, body, [&](int i) {
             if (!light.lit.empty() && !light.lit[i]) return false;
-            if (!cone) return true;
+            if (!cone || (all && all[i])) return true;
             Imath::V3f L(light.L[i], light.L[n + i], light.L[2 * n + i]);
             return InCone(L, Triple(axis, i), Value(angle, i));
         });
@@ -258,6 +308,7 @@ void OpIllumNext(ExecState& x, const Instr& in) {
         CopyPlanes(x, p.globals[kGlobalL], light.L, 3);
         CopyPlanes(x, p.globals[kGlobalCl], light.Cl, x.colorComponents);
         CopyPlanes(x, p.globals[kGlobalOl], light.Ol, x.colorComponents);
+        AimAllDirectionsLight(x, light, cone ? &axis : nullptr);
         return;
     }
     x.pc = in.jump;
@@ -294,9 +345,11 @@ void OpSolar(ExecState& x, const Instr& in) {
     for (int i = 0; i < x.n; ++i) {
         if (!(lit.all || lit.bits[i])) continue;
         x.lit[i] = 1;
+        // L = axis: the light arrives along it everywhere. solar() without an axis is light
+        // from all directions (RISpec §13.3.2): it has no L of its own; the surface side aims
+        // it (OpIllumNext, the lighting built-ins).
+        if (!axisReg.data) x.allDirections[i] = 1, x.anyAllDirections = true;
         if (!L.data) continue;
-        // L = axis: the light arrives along it everywhere. solar() without an axis has no
-        // direction to give; L is then 0 (see docs/shading-language.md).
         Imath::V3f axis = axisReg.data ? Triple(axisReg, i) : Imath::V3f(0.0f);
         for (int c = 0; c < 3; ++c) L.Plane(c)[i] = axis[c];
     }

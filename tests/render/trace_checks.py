@@ -29,6 +29,8 @@ import subprocess
 import sys
 import tempfile
 
+from analytic_checks import render_in_folder
+
 SHADERS = {
     "mirror.sl": """
 surface mirror(float Kr = 1, Ke = 0) {
@@ -345,17 +347,10 @@ def main():
     names = args.names or list(CHECKS) + ["thread_counts_agree"]
     failures = 0
     with tempfile.TemporaryDirectory(prefix="gonio_trace_") as folder:
-        for name, text in SHADERS.items():
-            with open(os.path.join(folder, name), "w") as f:
-                f.write(text)
         make_textures(folder)
-        scene = os.path.join(folder, "scene.rib")
-        with open(scene, "w") as f:
-            f.write(scene_text())
-        proc = subprocess.run([gonio, "render", scene], cwd=folder, capture_output=True,
-                              text=True)
-        if proc.returncode != 0 or re.search(r"warning|error", proc.stderr):
-            print(f"gonio render failed or warned (exit {proc.returncode}):\n{proc.stderr}")
+        failure = render_in_folder(gonio, folder, SHADERS, scene_text())
+        if failure:
+            print(failure)
             return 1
         paths = [os.path.join(folder, name + ".exr") for name in FRAMES]
         images = {os.path.basename(p)[:-4]: image for p, image in read_images(paths).items()}
