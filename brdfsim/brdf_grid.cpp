@@ -28,16 +28,6 @@ void CheckSize(const SplatSet& splats, std::size_t cells) {
     }
 }
 
-template <typename Lists>
-void SumList(const SplatSet& splats, const Lists& lists, std::size_t cell, const SplatQuery& q,
-             double* acc) {
-    const std::uint32_t* entry = lists.entries.data() + lists.offsets[cell];
-    const std::uint32_t* end = lists.entries.data() + lists.offsets[cell + 1];
-    for (; entry != end; ++entry) {
-        splats.Accumulate(*entry & kSplatMask, static_cast<int>(*entry >> kImageShift), q, acc);
-    }
-}
-
 }  // namespace
 
 GridStats ComputeGridStats(const CellLists& lists, std::size_t photons) {
@@ -84,25 +74,24 @@ BrdfGrid::BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
         }
     };
     lists_ = CellLists::Build(numOut * numOut, s.Size(), emit, progress);
+    tree_ = SplatTree(s);
 }
 
 BrdfGrid::BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects, CellLists lists)
-    : splats_(std::move(splats)), grid_(rings, rects), lists_(std::move(lists)) {}
+    : splats_(std::move(splats)), grid_(rings, rects), lists_(std::move(lists)), tree_(*splats_) {}
 
 void BrdfGrid::Eval(const Imath::V3f& wIn, const Imath::V3f& wOut, float* f) const {
     const int n = splats_->NumComponents();
     double acc[16] = {0};
     std::vector<double> wide(n > 16 ? n : 0, 0.0);
     double* sum = n > 16 ? wide.data() : acc;
-    if (wIn.z > 0 && wOut.z > 0) {
-        const std::size_t cell =
-            static_cast<std::size_t>(grid_.CellOf(wIn)) * grid_.NumCells() + grid_.CellOf(wOut);
-        SumList(*splats_, lists_, cell, splats_->MakeQuery(wIn, wOut), sum);
-    }
+    if (wIn.z > 0 && wOut.z > 0) tree_.Accumulate(splats_->MakeQuery(wIn, wOut), sum);
     for (int c = 0; c < n; ++c) f[c] = static_cast<float>(sum[c]);
 }
 
-std::size_t BrdfGrid::MemoryBytes() const { return SplatSetBytes(*splats_) + lists_.Bytes(); }
+std::size_t BrdfGrid::MemoryBytes() const {
+    return SplatSetBytes(*splats_) + lists_.Bytes() + tree_.MemoryBytes();
+}
 
 BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
                          const ProgressFn& progress)
@@ -137,32 +126,28 @@ BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int 
         }
     };
     lists_ = CellLists::Build(rings_ * numOut, s.Size(), emit, progress);
+    tree_ = SplatTree(s);
 }
 
 BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
                          CellLists lists)
-    : splats_(std::move(splats)), rings_(rings), grid_(rings, rects), lists_(std::move(lists)) {}
-
-int BrdfIsoGrid::RangeOf(float theta) const {
-    return std::clamp(static_cast<int>(theta / (0.5 * kPi) * rings_), 0, rings_ - 1);
-}
+    : splats_(std::move(splats)),
+      rings_(rings),
+      grid_(rings, rects),
+      lists_(std::move(lists)),
+      tree_(*splats_) {}
 
 void BrdfIsoGrid::Eval(const Imath::V3f& wIn, const Imath::V3f& wOut, float* f) const {
     const int n = splats_->NumComponents();
     double acc[16] = {0};
     std::vector<double> wide(n > 16 ? n : 0, 0.0);
     double* sum = n > 16 ? wide.data() : acc;
-    if (wIn.z > 0 && wOut.z > 0) {
-        const SplatQuery q = splats_->MakeQuery(wIn, wOut);
-        const Imath::V3f relOut(q.outX[0], q.outY[0], q.outZ[0]);
-        const std::size_t cell =
-            static_cast<std::size_t>(RangeOf(q.thetaIn[0])) * grid_.NumCells() +
-            grid_.CellOf(relOut);
-        SumList(*splats_, lists_, cell, q, sum);
-    }
+    if (wIn.z > 0 && wOut.z > 0) tree_.Accumulate(splats_->MakeQuery(wIn, wOut), sum);
     for (int c = 0; c < n; ++c) f[c] = static_cast<float>(sum[c]);
 }
 
-std::size_t BrdfIsoGrid::MemoryBytes() const { return SplatSetBytes(*splats_) + lists_.Bytes(); }
+std::size_t BrdfIsoGrid::MemoryBytes() const {
+    return SplatSetBytes(*splats_) + lists_.Bytes() + tree_.MemoryBytes();
+}
 
 }  // namespace gonio

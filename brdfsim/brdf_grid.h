@@ -1,7 +1,9 @@
 #pragma once
 // The 4D splat grid of thesis §4.3.1-4.3.2 (GPBRDFGrid): the incoming and the outgoing
 // hemisphere are each subdivided (HemisphereGrid); every pair of cells keeps the list of splat
-// images that reach it, so a lookup sums only those. BrdfIsoGrid is the 3D variant (§4.3.3).
+// images that reach it (Table 4.1, the .grd file). BrdfIsoGrid is the 3D variant (§4.3.3).
+// A lookup sums the same splat images, but finds them through a SplatTree built at load time:
+// a cell's list holds about ten times the splats that reach a given point of it (issue 4).
 
 #include <memory>
 
@@ -9,6 +11,7 @@
 #include "cell_lists.h"
 #include "hemisphere_grid.h"
 #include "splat_set.h"
+#include "splat_tree.h"
 
 namespace gonio {
 
@@ -44,6 +47,7 @@ class BrdfGrid : public Brdf {
     std::shared_ptr<const SplatSet> splats_;
     HemisphereGrid grid_;  // the same subdivision on both hemispheres (thesis C.3.2)
     CellLists lists_;
+    SplatTree tree_;  // finds the splats a lookup sums (the cells' lists give the same sum)
 };
 
 // Isotropic: θ_in split into `rings` ranges, each holding an outgoing hemisphere (θ_out, Δφ)
@@ -66,12 +70,11 @@ class BrdfIsoGrid : public Brdf {
     GridStats Stats() const { return ComputeGridStats(lists_, splats_->Size()); }
 
   private:
-    int RangeOf(float theta) const;
-
     std::shared_ptr<const SplatSet> splats_;
     int rings_;
     HemisphereGrid grid_;
     CellLists lists_;
+    SplatTree tree_;
 };
 
 }  // namespace gonio
