@@ -109,7 +109,8 @@ class ShadingContext {
     // Filtered texture lookup of `channels` channels starting at `firstChannel`, per point, at
     // (s, t) with the four-corner footprint when ds/dt are given (may be null). Options are the
     // RSL texture parameters ("blur", "width", "filter", "fill", ...). Writes channels × n
-    // floats to out (component-major). False (and black) if the texture cannot be read.
+    // floats to out (component-major). False (and black) if the texture cannot be read; the
+    // context then reports why through RuntimeWarning.
     virtual bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
                          const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                          const float* dtdy, const uint8_t* active, float* out) = 0;

@@ -101,7 +101,7 @@ bool SimpleShadingContext::RendererInfo(const std::string& name, const TypeSpec&
 void SimpleShadingContext::RuntimeWarning(const std::string& key, const std::string& message) {
     // Reported as a compiler would, at the shader statement, once per key and statement.
     const std::string& where = Statement();
-    diagnostics_.WarningOnce(where + key + message, StatementLoc(where, "gonio shade"), message);
+    diagnostics_.WarningOnce(where + key, StatementLoc(where, "gonio shade"), message);
 }
 
 void SimpleShadingContext::Print(const std::string& text) { std::fputs(text.c_str(), printSink_); }

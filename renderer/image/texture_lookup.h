@@ -20,7 +20,8 @@ class TextureLookup {
     bool Texture(const std::string& file, int firstChannel, int channels, int n, const float* s,
                  const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                  const float* dtdy, const uint8_t* active, float* out);
-    // A lat-long or cube environment map in direction D (3 × n, world space).
+    // A lat-long or cube environment map in direction D (3 × n, in the space the map was made
+    // in: the shader transforms it there).
     bool Environment(const std::string& file, int firstChannel, int channels, int n,
                      const float* directions, const uint8_t* active, float* out);
     // textureinfo() (RISpec Table 15.3): "resolution" (2 floats), "channels" (1), "type"

@@ -51,11 +51,6 @@ std::vector<std::string> SearchPath(const Frame& frame, const std::string& kind,
     return standard;
 }
 
-// Textures and .grd files: relative to the working folder, then next to the scene.
-std::vector<std::string> FrameTextureSearchPath(const Frame& frame) {
-    return SearchPath(frame, "texture", {".", SceneFolder(frame)});
-}
-
 // "a surface", "an imager".
 std::string WithArticle(sl::ShaderType type) {
     const std::string name = sl::ToString(type);
@@ -65,6 +60,11 @@ std::string WithArticle(sl::ShaderType type) {
 }  // namespace
 
 std::string DefaultShaderFolder() { return GONIO_SHADER_DIR; }
+
+// Textures and .grd files: relative to the working folder, then next to the scene.
+std::vector<std::string> FrameTextureSearchPath(const Frame& frame) {
+    return SearchPath(frame, "texture", {".", SceneFolder(frame)});
+}
 
 std::vector<std::string> ShaderSearchPath(const Frame& frame) {
     return SearchPath(frame, "shader", {SceneFolder(frame), DefaultShaderFolder()});

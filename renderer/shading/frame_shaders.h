@@ -80,6 +80,10 @@ std::string DefaultShaderFolder();
 // (Option "searchpath" "shader" changes it).
 std::vector<std::string> ShaderSearchPath(const Frame& frame);
 
+// Where textures and .grd files are looked for: the working folder, then the scene's folder
+// (Option "searchpath" "texture" changes it).
+std::vector<std::string> FrameTextureSearchPath(const Frame& frame);
+
 // The instance a shader request names: the shader from `system`'s search path, checked to be of
 // the `expected` type, with the request's parameters (point-like values move from shader space
 // with `currentFromShader`). A missing shader, a wrong type and a parameter that does not match

@@ -13,6 +13,7 @@
 #include "shaderlang/shading_context.h"
 #include "shaderlang/shading_system.h"
 #include "shading/frame_shaders.h"
+#include "shading/named_textures.h"
 
 namespace gonio {
 namespace {
@@ -21,12 +22,14 @@ namespace {
 // threads split the work; 256 points keep the interpreter's registers in cache.
 constexpr int kTileSize = 16;
 
-// What an imager shader may ask of the renderer: the spaces of a finished image, no lights,
-// textures or traced rays (those belong to the scene, which is gone by now).
+// What an imager shader may ask of the renderer: the spaces of a finished image and textures;
+// no lights, shadows or traced rays (those belong to the scene, which is gone by now).
 class ImagerContext : public sl::ShadingContext {
   public:
-    ImagerContext(const Frame& frame, Diagnostics& diagnostics)
-        : frame_(frame), diagnostics_(diagnostics) {}
+    ImagerContext(const Frame& frame, TextureLookup& textures, Diagnostics& diagnostics)
+        : frame_(frame),
+          diagnostics_(diagnostics),
+          textures_(textures, FrameTextureSearchPath(frame)) {}
 
     // A batch of a tile of `width` x `height` pixels, row by row, whose random() streams start
     // from `seeds` (one per pixel).
@@ -63,14 +66,23 @@ class ImagerContext : public sl::ShadingContext {
         return false;
     }
     const std::vector<sl::LightResult>& Lights() override { return noLights_; }
-    bool Texture(const std::string& name, int, int channels, const float*, const float*,
-                 const float*, const float*, const float*, const float*, const uint8_t*,
-                 float* out) override {
-        return Unavailable("texture(\"" + name + "\")", channels, out);
+    bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
+                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
+                 const float* dtdy, const uint8_t* active, float* out) override {
+        return textures_.Texture(*this, n_, name, firstChannel, channels, s, t, dsdx, dtdx, dsdy,
+                                 dtdy, active, out);
     }
-    bool Environment(const std::string& name, int, int channels, const float*, const uint8_t*,
-                     float* out) override {
-        return Unavailable("environment(\"" + name + "\")", channels, out);
+    bool Environment(const std::string& name, int firstChannel, int channels,
+                     const float* directions, const uint8_t* active, float* out) override {
+        return textures_.Environment(*this, n_, name, firstChannel, channels, directions, active,
+                                     out);
+    }
+    std::string FindTexture(const std::string& name) const override { return textures_.Find(name); }
+    // The texture's matrices take world space to its camera, and an imager has no world.
+    bool TextureInfo(const std::string& name, const std::string& dataname,
+                     std::vector<float>* floats, std::string* text) override {
+        if (dataname == "viewingmatrix" || dataname == "projectionmatrix") return false;
+        return textures_.Info(name, dataname, floats, text);
     }
     bool Shadow(const std::string& name, const float*, const uint8_t*, float* out) override {
         return Unavailable("shadow(\"" + name + "\")", 1, out);
@@ -98,7 +110,7 @@ class ImagerContext : public sl::ShadingContext {
         const std::string& where = Statement();
         const FileLoc loc = where.empty() ? request.loc : sl::StatementLoc(where, "");
         diagnostics_.WarningOnce(
-            "imager " + where + key + message, loc,
+            "imager " + where + key, loc,
             message + " (imager \"" + request.name + "\" of " + request.loc.ToString() + ")");
     }
     void Print(const std::string& text) override {
@@ -119,6 +131,7 @@ class ImagerContext : public sl::ShadingContext {
 
     const Frame& frame_;
     Diagnostics& diagnostics_;
+    NamedTextures textures_;
     std::vector<sl::LightResult> noLights_;
     std::vector<int> uNeighbours_, vNeighbours_;
     std::vector<float> steps_;
@@ -168,10 +181,11 @@ class ColourConversion {
 // Runs the imager over tiles; one per thread.
 class ImagerWorker {
   public:
-    ImagerWorker(const Frame& frame, sl::ShaderInstance& instance, Diagnostics& diagnostics)
+    ImagerWorker(const Frame& frame, sl::ShaderInstance& instance, TextureLookup& textures,
+                 Diagnostics& diagnostics)
         : frame_(frame),
           instance_(instance),
-          context_(frame, diagnostics),
+          context_(frame, textures, diagnostics),
           colours_(frame.options) {}
 
     void RunTile(int x0, int y0, int width, int height, uint64_t seed, Image& image);
@@ -244,11 +258,13 @@ bool ApplyImager(const Frame& frame, uint64_t seed, Image& image, Diagnostics& d
 
     const int tilesX = (image.width + kTileSize - 1) / kTileSize;
     const int tilesY = (image.height + kTileSize - 1) / kTileSize;
+    TextureLookup textures;
     tbb::enumerable_thread_specific<std::unique_ptr<ImagerWorker>> workers;
     tbb::parallel_for(0, tilesX * tilesY, [&](int tile) {
         const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
         std::unique_ptr<ImagerWorker>& worker = workers.local();
-        if (!worker) worker = std::make_unique<ImagerWorker>(frame, *instance, diagnostics);
+        if (!worker)
+            worker = std::make_unique<ImagerWorker>(frame, *instance, textures, diagnostics);
         worker->RunTile(x0, y0, std::min(kTileSize, image.width - x0),
                         std::min(kTileSize, image.height - y0), seed, image);
     });

@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "image/texture_lookup.h"
-#include "rib/search_path.h"
 
 namespace gonio {
 namespace {
@@ -21,7 +20,7 @@ RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
     : shaders_(shaders),
       scene_(scene),
       camera_(camera),
-      textures_(textures),
+      textures_(textures, shaders.TextureSearchPath()),
       lightExecutor_(lightExecutor),
       tracer_(tracer),
       depth_(depth),
@@ -180,11 +179,8 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
 bool RenderContext::Texture(const std::string& name, int firstChannel, int channels, const float* s,
                             const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                             const float* dtdy, const uint8_t* active, float* out) {
-    const bool ok = textures_.Texture(FindTexture(name), firstChannel, channels, n_, s, t, dsdx,
-                                      dtdx, dsdy, dtdy, active, out);
-    if (!ok)
-        RuntimeWarning("texture " + name, "texture \"" + name + "\": " + textures_.LastError());
-    return ok;
+    return textures_.Texture(*this, n_, name, firstChannel, channels, s, t, dsdx, dtdx, dsdy, dtdy,
+                             active, out);
 }
 
 // The direction is used as the shader gives it: RISpec §15.7.2 leaves the map's coordinate
@@ -193,27 +189,18 @@ bool RenderContext::Texture(const std::string& name, int firstChannel, int chann
 // turn the reflection with the camera.
 bool RenderContext::Environment(const std::string& name, int firstChannel, int channels,
                                 const float* directions, const uint8_t* active, float* out) {
-    const bool ok = textures_.Environment(FindTexture(name), firstChannel, channels, n_, directions,
-                                          active, out);
-    if (!ok)
-        RuntimeWarning("environment " + name,
-                       "environment \"" + name + "\": " + textures_.LastError());
-    return ok;
+    return textures_.Environment(*this, n_, name, firstChannel, channels, directions, active, out);
 }
 
 std::string RenderContext::FindTexture(const std::string& name) const {
-    auto known = foundTextures_.find(name);
-    if (known != foundTextures_.end()) return known->second;
-    const std::string found = FindOnSearchPath(name, shaders_.TextureSearchPath());
-    // Not found: the name as given, so that the reader's error message names what was asked.
-    return foundTextures_.emplace(name, found.empty() ? name : found).first->second;
+    return textures_.Find(name);
 }
 
 // The matrices a texture was made with take world space to its camera and screen; the
 // shader works in current space.
 bool RenderContext::TextureInfo(const std::string& name, const std::string& dataname,
                                 std::vector<float>* floats, std::string* text) {
-    if (!textures_.Info(FindTexture(name), dataname, floats, text)) return false;
+    if (!textures_.Info(name, dataname, floats, text)) return false;
     if ((dataname == "viewingmatrix" || dataname == "projectionmatrix") && floats->size() == 16) {
         M44f fromWorld;
         for (int i = 0; i < 16; ++i) fromWorld[i / 4][i % 4] = (*floats)[i];
@@ -365,7 +352,7 @@ void RenderContext::RuntimeWarning(const std::string& key, const std::string& me
     const std::string bound = where.empty() || !shader_ ? std::string()
                                                         : " (shader \"" + shader_->name + "\" of " +
                                                               request.ToString() + ")";
-    shaders_.GetDiagnostics().WarningOnce("runtime " + where + key + message, loc, message + bound);
+    shaders_.GetDiagnostics().WarningOnce("runtime " + where + key, loc, message + bound);
 }
 
 void RenderContext::Print(const std::string& text) {

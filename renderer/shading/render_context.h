@@ -12,6 +12,7 @@
 #include "shaderlang/message_passing.h"
 #include "shaderlang/shading_context.h"
 #include "shading/frame_shaders.h"
+#include "shading/named_textures.h"
 #include "shading/surface_shading.h"
 
 namespace gonio {
@@ -126,7 +127,7 @@ class RenderContext : public sl::ShadingContext {
     const FrameShaders& shaders_;
     const RayScene& scene_;
     const Camera& camera_;
-    TextureLookup& textures_;
+    NamedTextures textures_;
     sl::ShaderExecutor& lightExecutor_;
     RayTracer& tracer_;
     int depth_;
@@ -144,9 +145,6 @@ class RenderContext : public sl::ShadingContext {
     M44f worldFromCurrent_;
     sl::MessageShaders messageShaders_;
     bool captureLights_ = false;
-    // FindTexture's answers by name: looking a name up costs file-system calls, and texture()
-    // and brdf() ask again for every batch.
-    mutable std::unordered_map<std::string, std::string> foundTextures_;
 };
 
 }  // namespace gonio

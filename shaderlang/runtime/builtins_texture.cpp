@@ -95,10 +95,6 @@ std::vector<float> StepDifference(const BuiltinCall& call, const std::vector<flo
     return d;
 }
 
-void WarnTextureFailure(const BuiltinCall& call, const std::string& file) {
-    call.context->RuntimeWarning("texture:" + file, "cannot read texture \"" + file + "\"");
-}
-
 void CopyOut(const BuiltinCall& call, const std::vector<float>& out) {
     const int n = call.n, w = call.result.width;
     ForEachPoint(call, [&](int p) {
@@ -154,11 +150,10 @@ void TextureKernel(const BuiltinCall& call) {
         dtdy[p] = dtdy[p] * options.twidth + std::copysign(options.tblur, dtdy[p]);
     }
     std::vector<float> out(static_cast<size_t>(w) * n, 0.0f);
-    if (call.context &&
-        !call.context->Texture(name.file, name.firstChannel, w, s.data(), t.data(), dsdx.data(),
-                               dtdx.data(), dsdy.data(), dtdy.data(), call.active, out.data())) {
-        WarnTextureFailure(call, name.file);
-    }
+    // A file that cannot be read gives black; the context says why.
+    if (call.context)
+        call.context->Texture(name.file, name.firstChannel, w, s.data(), t.data(), dsdx.data(),
+                              dtdx.data(), dsdy.data(), dtdy.data(), call.active, out.data());
     CopyOut(call, out);
 }
 
@@ -180,10 +175,9 @@ void EnvironmentKernel(const BuiltinCall& call) {
     const int coords = CoordinateArgCount(call);
     std::vector<float> directions = MeanTriple(call, coords >= 4 ? 4 : 1);
     std::vector<float> out(static_cast<size_t>(w) * n, 0.0f);
-    if (call.context && !call.context->Environment(name.file, name.firstChannel, w,
-                                                   directions.data(), call.active, out.data())) {
-        WarnTextureFailure(call, name.file);
-    }
+    if (call.context)
+        call.context->Environment(name.file, name.firstChannel, w, directions.data(), call.active,
+                                  out.data());
     CopyOut(call, out);
 }
 
@@ -193,9 +187,7 @@ void ShadowKernel(const BuiltinCall& call) {
     const int coords = CoordinateArgCount(call);
     std::vector<float> points = MeanTriple(call, coords >= 4 ? 4 : 1);
     std::vector<float> out(n, 0.0f);
-    if (call.context && !call.context->Shadow(name.file, points.data(), call.active, out.data())) {
-        WarnTextureFailure(call, name.file);
-    }
+    if (call.context) call.context->Shadow(name.file, points.data(), call.active, out.data());
     ForEachPoint(call, [&](int p) {
         for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = out[p];
     });

@@ -93,7 +93,7 @@ void ExecState::Warn(const Instr& in, const std::string& message) {
     if (foldMode || !context) return;
     if (warnings && !warnings->First(in.loc, message)) return;
     context->SetStatement(&program->locations[in.loc]);
-    context->RuntimeWarning("", message);
+    context->RuntimeWarning(message, message);
 }
 
 FloatArg ExecState::Get(const std::string& name) const {

@@ -2,12 +2,14 @@
 """Checks of Imager shaders through `gonio render` (issue 3): the standard imager `background`
 composites a colour under the filtered pixels exactly, c + (1 - a)·background with alpha 1,
 before Exposure; an Imager that names a missing shader or a surface shader is reported at its
-RIB line and the frame is still written, without an imager.
+RIB line and the frame is still written, without an imager; an imager's texture() reads the
+map at raster coordinates.
 
     imager_checks.py --gonio build/bin/gonio"""
 
 import argparse
 import os
+import subprocess
 import sys
 import tempfile
 
@@ -97,7 +99,46 @@ def check_unusable_imagers_are_reported(ws):
                f"corner pixel {image.pixels[(0, 0)]}: the frame was not written without imager")
 
 
-CHECKS = [check_background_is_exact, check_unusable_imagers_are_reported]
+BACKDROP = """imager backdrop(string map = "") {
+    color c = texture(map, xcomp(P) / 32, ycomp(P) / 32);
+    Ci += (1 - alpha) * c;
+    alpha = 1;
+}
+"""
+LEFT, RIGHT = (0.25, 0.5, 0.75), (1.0, 0.5, 0.0)
+
+
+def check_imagers_read_textures(ws):
+    """An imager looks textures up on the texture search path, at raster coordinates: the left
+    half of the map shows left of the sphere, the right half right of it."""
+    with open(ws.path("backdrop.sl"), "w") as f:
+        f.write(BACKDROP)
+    colours = ",".join(str(c) for c in LEFT), ",".join(str(c) for c in RIGHT)
+    subprocess.run(["oiiotool", "--pattern", f"checker:width=16:height=64:color1={colours[0]}:"
+                    f"color2={colours[1]}", "32x32", "3", "-d", "float", "-o", "halves.tif"],
+                   cwd=ws.dir, check=True)
+    proc = ws.render(frame(1, "backdrop.tif", 'Imager "backdrop" "string map" "halves.tif"\n') +
+                     frame(2, "nomap.tif", 'Imager "backdrop" "string map" "nosuch.tif"\n'),
+                     expect_code=0)
+    backdrop, = read_images(ws.path("backdrop.tif"))
+    checked = 0
+    for (px, py), got in backdrop.pixels.items():
+        near, _ = pixel_distances(px, py)
+        seam = abs(px + 0.5 - SIZE / 2) < 3
+        border = min(px, py, SIZE - 1 - px, SIZE - 1 - py) < 2
+        if near <= 1.001 or seam or border:
+            continue  # the sphere, or where the texture filter blurs a seam or the black beyond
+        want = (*(LEFT if px < SIZE / 2 else RIGHT), 1)
+        expect(close(got, want, 1e-3), f"pixel {(px, py)}: {got}, expected {want}")
+        checked += 1
+    expect(checked > 250, f"only {checked} pixels checked")
+    warnings = [line for line in proc.stderr.splitlines() if "nosuch.tif" in line]
+    expect(len(warnings) == 1 and "backdrop.sl:2" in warnings[0],
+           f"a missing map should warn once, at the imager's texture() line:\n{proc.stderr}")
+
+
+CHECKS = [check_background_is_exact, check_unusable_imagers_are_reported,
+          check_imagers_read_textures]
 
 
 def main():

@@ -1,0 +1,40 @@
+#include "shading/named_textures.h"
+
+#include "rib/search_path.h"
+
+namespace gonio {
+
+const std::string& NamedTextures::Find(const std::string& name) const {
+    auto known = found_.find(name);
+    if (known != found_.end()) return known->second;
+    const std::string found = FindOnSearchPath(name, searchPath_);
+    return found_.emplace(name, found.empty() ? name : found).first->second;
+}
+
+// OpenImageIO says why a file cannot be read only on the first failed lookup; the warning is
+// given once, but another thread's failure may be the one to give it.
+std::string NamedTextures::Why() const {
+    const std::string error = lookup_.LastError();
+    return error.empty() ? "cannot read it" : error;
+}
+
+bool NamedTextures::Texture(sl::ShadingContext& asker, int n, const std::string& name,
+                            int firstChannel, int channels, const float* s, const float* t,
+                            const float* dsdx, const float* dtdx, const float* dsdy,
+                            const float* dtdy, const uint8_t* active, float* out) {
+    const bool ok = lookup_.Texture(Find(name), firstChannel, channels, n, s, t, dsdx, dtdx, dsdy,
+                                    dtdy, active, out);
+    if (!ok) asker.RuntimeWarning("texture " + name, "texture \"" + name + "\": " + Why());
+    return ok;
+}
+
+bool NamedTextures::Environment(sl::ShadingContext& asker, int n, const std::string& name,
+                                int firstChannel, int channels, const float* directions,
+                                const uint8_t* active, float* out) {
+    const bool ok =
+        lookup_.Environment(Find(name), firstChannel, channels, n, directions, active, out);
+    if (!ok) asker.RuntimeWarning("environment " + name, "environment \"" + name + "\": " + Why());
+    return ok;
+}
+
+}  // namespace gonio
