@@ -55,21 +55,31 @@ V3f FromLocal(const V3f& n, float cosTheta, float phi) {
 }
 
 MicroBrdf::Value MicroBrdf::Evaluate(const V3f& n, const V3f& wi, const V3f& wo) const {
+    const float cosAlpha = Mirror(n, wi).dot(wo);
+    return ValueWithLobe(n, wo, ks > 0 && cosAlpha > 0 ? std::pow(cosAlpha, exponent) : 0.0f);
+}
+
+MicroBrdf::Value MicroBrdf::ValueWithLobe(const V3f& n, const V3f& wo, float lobe) const {
     const float total = kd + ks;
     if (total <= 0) return {0, 0};
     const float cosTheta = std::max(0.0f, n.dot(wo));
-    const float cosAlpha = Mirror(n, wi).dot(wo);
-    const float lobe = ks > 0 && cosAlpha > 0 ? std::pow(cosAlpha, exponent) : 0.0f;
     // thesis eq. 3.16 for the specular lobe, cos θ/π for the diffuse one
     return {ks * (exponent + 2) / (2 * kPi) * lobe,
             kd / total * cosTheta / kPi + ks / total * (exponent + 1) / (2 * kPi) * lobe};
 }
 
-V3f MicroBrdf::Sample(const V3f& n, const V3f& wi, float u0, float u1, float u2) const {
+MicroBrdf::Sampled MicroBrdf::Sample(const V3f& n, const V3f& wi, float u0, float u1,
+                                     float u2) const {
     const float phi = 2 * kPi * u2;
-    if (u0 * (kd + ks) < kd) return FromLocal(n, std::sqrt(1 - u1), phi);  // cosine-weighted
-    // thesis eq. 3.17: θ = arccos((1 − r₁)^(1/(n+1))) around the mirror direction
-    return FromLocal(Mirror(n, wi), std::pow(1 - u1, 1 / (exponent + 1)), phi);
+    if (u0 * (kd + ks) < kd) {  // cosine-weighted
+        const V3f wo = FromLocal(n, std::sqrt(1 - u1), phi);
+        return {wo, Evaluate(n, wi, wo)};
+    }
+    // thesis eq. 3.17: θ = arccos((1 − r₁)^(1/(n+1))) around the mirror direction. The lobe
+    // there, cosⁿα = (1 − r₁)^(n/(n+1)), is (1 − r₁)/cos α: no second pow.
+    const float cosAlpha = std::pow(1 - u1, 1 / (exponent + 1));
+    const V3f wo = FromLocal(Mirror(n, wi), cosAlpha, phi);
+    return {wo, ValueWithLobe(n, wo, cosAlpha > 0 ? (1 - u1) / cosAlpha : 0.0f)};
 }
 
 MicroBrdf MicroBrdfFromAttributes(const Attributes& attributes, Diagnostics& diagnostics) {

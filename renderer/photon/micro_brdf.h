@@ -22,9 +22,17 @@ struct MicroBrdf {
         float specular, pdf;
     };
     Value Evaluate(const Imath::V3f& n, const Imath::V3f& wi, const Imath::V3f& wo) const;
-    // Draws ωo from uniform numbers u0 (lobe), u1, u2 (direction).
-    Imath::V3f Sample(const Imath::V3f& n, const Imath::V3f& wi, float u0, float u1,
-                      float u2) const;
+
+    struct Sampled {
+        Imath::V3f wo;
+        Value value;  // Evaluate(n, wi, wo), to rounding
+    };
+    // Draws ωo from uniform numbers u0 (lobe), u1, u2 (direction), with its value and pdf.
+    Sampled Sample(const Imath::V3f& n, const Imath::V3f& wi, float u0, float u1, float u2) const;
+
+  private:
+    // The Value for a known cosⁿα.
+    Value ValueWithLobe(const Imath::V3f& n, const Imath::V3f& wo, float lobe) const;
 };
 
 // kd, ks and the exponent of a primitive from its surface shader instance (Kd, Ks, exponent or

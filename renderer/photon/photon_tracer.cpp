@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "photon/row_angles.h"
 #include "photon/scene_bounds.h"
 #include "render/progress.h"
 #include "render/random.h"
@@ -152,9 +153,9 @@ class PathTracer {
         const float t0 = c_.settings.thetaMin, t1 = c_.settings.thetaMax;
         if (!c_.settings.isotropic) {
             const float cosIn = c_.cosMax + (c_.cosMin - c_.cosMax) * (1 - u);
-            *theta = std::acos(std::min(1.0f, cosIn));
-            *sinTheta = std::sin(*theta);
-            *cosTheta = std::cos(*theta);
+            *theta = PolarAngle(cosIn);
+            *sinTheta = std::sqrt(std::max(0.0f, 1 - cosIn * cosIn));
+            *cosTheta = cosIn;
             *pIn = c_.pIn;
             return;
         }
@@ -174,11 +175,9 @@ class PathTracer {
         const V3f ng = FacingNormal(sp.Ng, wi);
         const V3f n = FacingNormal(sp.N, ng);
         const float u0 = random.Next(), u1 = random.Next(), u2 = random.Next();
-        const V3f wo = brdf.Sample(n, wi, u0, u1, u2);
+        const auto [wo, value] = brdf.Sample(n, wi, u0, u1, u2);
         const float cosOut = n.dot(wo);
-        if (wo.dot(ng) <= 0 || cosOut <= 0) return V3f(0);
-        const MicroBrdf::Value value = brdf.Evaluate(n, wi, wo);
-        if (!(value.pdf > 0)) return V3f(0);
+        if (wo.dot(ng) <= 0 || cosOut <= 0 || !(value.pdf > 0)) return V3f(0);
         bool alive = false;
         for (int k = 0; k < c_.ncomps; ++k) {
             const float cs = k < int(sp.Cs.size()) ? sp.Cs[k] : 1.0f;
@@ -194,14 +193,14 @@ class PathTracer {
             return;
         }
         ++out_.stats.escapedUp;
-        float phiOut = std::atan2(wo.y, wo.x);
+        float phiOut = Azimuth(wo.y, wo.x);
         if (c_.settings.isotropic) {  // relative to the light: the map holds φ_in = 0
             phiOut -= phiIn;
             phiIn = 0;
         }
         phiOut -= 2 * kPi * std::floor(phiOut / (2 * kPi));
         float* row = out_.rows + out_.values;
-        row[0] = thetaIn, row[1] = phiIn, row[2] = std::acos(std::min(1.0f, wo.z));
+        row[0] = thetaIn, row[1] = phiIn, row[2] = PolarAngle(wo.z);
         row[3] = phiOut, row[4] = pIn;
         std::copy(beta_.begin(), beta_.end(), row + kFirstColumns);
         out_.values += kFirstColumns + c_.ncomps;
@@ -278,12 +277,15 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     std::vector<Batch> batches(numBatches);
     Progress progress("BRDFLight", settings.paths, settings.progress);
     tbb::parallel_for(uint64_t(0), numBatches, [&](uint64_t b) {
-        Batch& batch = batches[b];
+        // Counted on this thread's stack and stored once: neighbouring batches' counters share
+        // cache lines, and two threads bumping them per path cost about 5% on two cores.
+        Batch batch;
         batch.stats.energyUp.assign(c.ncomps, 0.0);
         batch.rows = result.rows.data() + b * kBatch * stride;
         PathTracer tracer(c, batch);
         const uint64_t first = b * kBatch, last = std::min(settings.paths, first + kBatch);
         for (uint64_t path = first; path < last; ++path) tracer.Trace(path);
+        batches[b] = std::move(batch);
         progress.Advance(last - first);
     });
     progress.Done();

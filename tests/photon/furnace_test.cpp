@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "photon_test_util.h"
+#include "render/random.h"
 
 namespace gonio {
 namespace {
@@ -95,6 +96,30 @@ TEST(MicroBrdf, NormalisedPhongAlbedo) {
     EXPECT_NEAR(PhongPlaneAlbedo(1, 85), 0.3631, 0.004);
 }
 
+// The tracer takes f and pdf from Sample, which reuses the drawn cos α for the specular lobe
+// instead of evaluating cosⁿα again: it must agree with Evaluate at the drawn direction.
+TEST(MicroBrdf, SampledValueIsTheEvaluatedOne) {
+    uint64_t state = 11;
+    auto next = [&] { return ToUnitFloat(Mix64(state += 0x9e3779b97f4a7c15ull)); };
+    int specularDraws = 0;
+    for (const MicroBrdf brdf : {MicroBrdf{0, 1, 25}, MicroBrdf{0.5f, 0.5f, 10},
+                                 MicroBrdf{0.3f, 0.7f, 1}, MicroBrdf{0.2f, 0.8f, 200}}) {
+        for (int i = 0; i < 20000; ++i) {
+            const V3f n = FromLocal(V3f(0, 0, 1), 1 - next(), 6.2831853f * next());
+            const V3f wi = FromLocal(n, 1 - next(), 6.2831853f * next());
+            const float u0 = next(), u1 = next(), u2 = next();
+            const MicroBrdf::Sampled s = brdf.Sample(n, wi, u0, u1, u2);
+            const MicroBrdf::Value exact = brdf.Evaluate(n, wi, s.wo);
+            specularDraws += u0 * (brdf.kd + brdf.ks) >= brdf.kd;
+            // cosⁿα turns the rounding of cos α into n times its relative error.
+            const float peak = brdf.ks * (brdf.exponent + 2) / 6.2831853f;
+            ASSERT_NEAR(s.value.specular, exact.specular, 2e-6f * brdf.exponent * peak + 1e-6f);
+            ASSERT_NEAR(s.value.pdf, exact.pdf, 2e-6f * brdf.exponent * peak + 1e-6f);
+        }
+    }
+    EXPECT_GT(specularDraws, 50000);
+}
+
 TEST(MicroBrdf, ShaderDefaultsAndOverrides) {
     Diagnostics diagnostics;
     Attributes a;
@@ -121,20 +146,25 @@ TEST(MicroBrdf, ShaderDefaultsAndOverrides) {
     EXPECT_EQ(diagnostics.WarningCount(), 0);
 }
 
-std::vector<float> GrassRows(int threads, uint64_t seed) {
+std::vector<float> ModelRows(const char* rib, int threads, uint64_t seed) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     PhotonTraceSettings s;
     s.paths = 20000;
     s.seed = seed;
-    return test::TraceRib(test::ReadRib("grass.rib"), s).rows;
+    return test::TraceRib(test::ReadRib(rib), s).rows;
 }
 
+// Triangles (grass) and exact quadrics (brushed metal's cylinders and disks).
 TEST(Determinism, SameMapForAnyThreadCount) {
-    const std::vector<float> one = GrassRows(1, 7), two = GrassRows(2, 7), four = GrassRows(4, 7);
-    ASSERT_FALSE(one.empty());
-    EXPECT_EQ(one, two);
-    EXPECT_EQ(one, four);
-    EXPECT_NE(one, GrassRows(2, 8));
+    for (const char* rib : {"grass.rib", "brushed_metal.rib"}) {
+        SCOPED_TRACE(rib);
+        const std::vector<float> one = ModelRows(rib, 1, 7), two = ModelRows(rib, 2, 7),
+                                 four = ModelRows(rib, 4, 7);
+        ASSERT_FALSE(one.empty());
+        EXPECT_EQ(one, two);
+        EXPECT_EQ(one, four);
+        EXPECT_NE(one, ModelRows(rib, 2, 8));
+    }
 }
 
 }  // namespace
