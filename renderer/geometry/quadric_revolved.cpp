@@ -140,20 +140,27 @@ bool RevolvedQuadric::IntersectPoint(const V3f& org, const V3f& dir, float tmin,
     return false;
 }
 
-V2f RevolvedQuadric::ParametersAt(const V3f& point) const {
-    const V3d p(point.x, point.y, point.z);
+double RevolvedQuadric::FindParameters(const V3d& p, double* u, double* v) const {
     // First exactly as IntersectPoint decided, then allowing for the rounding of the point to
     // float, and at last (a point off the surface) the nearest parameters of any candidate.
     for (double slack : {0.0, 1e-4, std::numeric_limits<double>::infinity()}) {
         ProfileCandidate candidates[2];
         const int m = ProfileCandidates(p, slack, candidates);
         for (int j = 0; j < m; ++j) {
-            double u;
-            if (ThetaParameter(p, candidates[j].angle, slack, &u))
-                return V2f(float(u), float(candidates[j].v));
+            if (ThetaParameter(p, candidates[j].angle, slack, u)) {
+                *v = candidates[j].v;
+                return slack;
+            }
         }
     }
-    return V2f(0, 0);
+    *u = *v = 0;
+    return -1;
+}
+
+V2f RevolvedQuadric::ParametersAt(const V3f& point) const {
+    double u, v;
+    FindParameters(V3d(point.x, point.y, point.z), &u, &v);
+    return V2f(float(u), float(v));
 }
 
 V3f RevolvedQuadric::NormalAt(const V3f& point) const {
@@ -172,9 +179,30 @@ bool RevolvedQuadric::Intersect(const V3f& org, const V3f& dir, float tmin, floa
 }
 
 SurfaceGeometry RevolvedQuadric::Evaluate(float u, float v) const {
-    const ProfilePoint profile = Profile(v);
     const double theta = u * thetaMax_;
-    const double c = std::cos(theta), s = std::sin(theta);
+    return Sweep(Profile(v), std::cos(theta), std::sin(theta), u, v);
+}
+
+SurfaceGeometry RevolvedQuadric::EvaluateAt(const V3f& point) const {
+    const V3d p(point.x, point.y, point.z);
+    double u, v;
+    const bool onShape = FindParameters(p, &u, &v) == 0;
+    const float fu = float(u), fv = float(v);
+    if (!onShape) return Evaluate(fu, fv);  // moved onto an edge: p is not on the sweep
+    const ProfilePoint profile = ProfileThrough(p, fv);
+    const V3d& L = profile.L;
+    // Near the axis the profile point's side (which of L.xy and −L.xy) is at the mercy of the
+    // rounding of v, and p's direction is lost in its own rounding.
+    const double rhoL2 = L.x * L.x + L.y * L.y, rhoP2 = p.x * p.x + p.y * p.y;
+    if (!(rhoL2 > 1e-8 * L.length2()) || !(rhoP2 > 1e-8 * p.length2())) return Evaluate(fu, fv);
+    // P = Rz(θ)·L: cos θ and sin θ are the dot and cross products of the unit xy directions.
+    const double scale = 1 / std::sqrt(rhoL2 * rhoP2);
+    const double c = (L.x * p.x + L.y * p.y) * scale, s = (L.x * p.y - L.y * p.x) * scale;
+    return Sweep(profile, c, s, fu, fv);
+}
+
+SurfaceGeometry RevolvedQuadric::Sweep(const ProfilePoint& profile, double c, double s, float u,
+                                       float v) const {
     auto rotate = [c, s](const V3d& a) { return V3d(c * a.x - s * a.y, s * a.x + c * a.y, a.z); };
     const V3d p = rotate(profile.L);
     const V3d dPdu = thetaMax_ * V3d(-p.y, p.x, 0);

@@ -102,11 +102,19 @@ class RevolvedQuadric : public Quadric {
     V2f ParametersAt(const V3f& point) const final;
     V3f NormalAt(const V3f& point) const final;
     SurfaceGeometry Evaluate(float u, float v) const final;
+    // Evaluate(ParametersAt(point)) for a point IntersectPoint reported, up to float rounding,
+    // without the cosine and sine of θ: for a point on the sweep they are the direction of its
+    // xy part from that of the profile point's. Points that needed ParametersAt's slack, and
+    // points next to the axis where that direction is lost, go through Evaluate.
+    SurfaceGeometry EvaluateAt(const V3f& point) const final;
 
   protected:
     explicit RevolvedQuadric(double thetamaxDegrees);
 
     virtual ProfilePoint Profile(double v) const = 0;
+    // The profile point at v whose sweep passes through the surface point p: Profile(v), or
+    // the same derived from p by shapes whose profile costs trigonometry.
+    virtual ProfilePoint ProfileThrough(const V3d& /*p*/, double v) const { return Profile(v); }
     // Where the ray o + t·d (o already moved near the shape) meets the whole unclipped surface,
     // for t in (lo, hi), ascending; at most 4.
     virtual int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const = 0;
@@ -135,6 +143,11 @@ class RevolvedQuadric : public Quadric {
 
   private:
     bool OnShape(const V3d& p) const;
+    // The (u, v) of the surface point p (see ParametersAt), in *u, *v; returns the slack that
+    // it took (0: p lies on the shape as IntersectPoint decided), or −1 where none did.
+    double FindParameters(const V3d& p, double* u, double* v) const;
+    // The surface point of `profile` swept by the angle whose cosine and sine are c and s.
+    SurfaceGeometry Sweep(const ProfilePoint& profile, double c, double s, float u, float v) const;
     // u for the surface point p swept from a profile point at polar angle profileAngle, if it
     // lies within the sweep (give or take `slack` radians, then moved onto the nearer edge).
     bool ThetaParameter(const V3d& p, double profileAngle, double slack, double* u) const;

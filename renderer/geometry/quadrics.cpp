@@ -44,10 +44,18 @@ class Sphere final : public RevolvedQuadric {
   protected:
     ProfilePoint Profile(double v) const override {
         const double phi = phiMin_ + v * (phiMax_ - phiMin_);
-        const double c = std::cos(phi), s = std::sin(phi);
-        // cross((-L.y, L.x, 0), dLdv) = r²·(φmax − φmin)·cos φ·(cos φ, 0, sin φ), cos φ ≥ 0.
-        return {radius_ * V3d(c, 0, s), radius_ * (phiMax_ - phiMin_) * V3d(-s, 0, c),
-                SignOf(phiMax_ - phiMin_) * V3d(c, 0, s)};
+        return ProfileAtAngle(std::cos(phi), std::sin(phi));
+    }
+
+    ProfilePoint ProfileThrough(const V3d& p, double v) const override {
+        // cos φ = ρ/|r| and sin φ = z/r, as in ProfileCandidates; divided by the point's own
+        // distance from the centre, so that a point rounded off the sphere gives a unit pair.
+        const double rho = std::sqrt(p.x * p.x + p.y * p.y), z = p.z * SignOf(radius_);
+        const double distance = std::sqrt(rho * rho + z * z);
+        // Near the poles v, rounded to float, no longer pins cos φ down to 1e-5: there the
+        // point's profile would be more accurate than Evaluate's, but it must be the same.
+        if (!(rho > 0.05 * distance)) return Profile(v);
+        return ProfileAtAngle(rho / distance, z / distance);
     }
 
     int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const override {
@@ -64,6 +72,12 @@ class Sphere final : public RevolvedQuadric {
     V3d ImplicitGradient(const V3d& p) const override { return implicit_.Gradient(p); }
 
   private:
+    ProfilePoint ProfileAtAngle(double c, double s) const {
+        // cross((-L.y, L.x, 0), dLdv) = r²·(φmax − φmin)·cos φ·(cos φ, 0, sin φ), cos φ ≥ 0.
+        return {radius_ * V3d(c, 0, s), radius_ * (phiMax_ - phiMin_) * V3d(-s, 0, c),
+                SignOf(phiMax_ - phiMin_) * V3d(c, 0, s)};
+    }
+
     double radius_, phiMin_ = 0, phiMax_ = 0;
     RevolutionQuadric implicit_;
 };

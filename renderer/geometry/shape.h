@@ -79,6 +79,12 @@ class Quadric {
     virtual V3f NormalAt(const V3f& point) const = 0;
     // The surface point at parameters (u, v) in [0,1]².
     virtual SurfaceGeometry Evaluate(float u, float v) const = 0;
+    // Evaluate(ParametersAt(point)) for a point IntersectPoint reported, up to float rounding;
+    // a quadric may get there more cheaply from the point itself.
+    virtual SurfaceGeometry EvaluateAt(const V3f& point) const {
+        const V2f uv = ParametersAt(point);
+        return Evaluate(uv.x, uv.y);
+    }
 };
 
 // A Catmull-Clark control cage, subdivided by Embree.

@@ -579,10 +579,8 @@ ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const Ray
     const ShapeGeometry& geometry = record.shape->geometry;
     if (const auto* mesh = std::get_if<TriangleMesh>(&geometry))
         return EvaluateMesh(*mesh, hit.primID, hit.u, hit.v);
-    if (const auto* quadric = std::get_if<QuadricShape>(&geometry)) {
-        const V2f uv = quadric->quadric->ParametersAt(hit.Ng);  // Ng holds the object-space P
-        return EvaluateQuadric(*quadric, uv.x, uv.y);
-    }
+    if (const auto* quadric = std::get_if<QuadricShape>(&geometry))
+        return EvaluateQuadricAt(*quadric, hit.Ng);  // Ng holds the object-space P
     const V3f objectP = TransformPoint(record.objectFromSpace, spaceP);
     const V3f objectNg = TransformNormal(record.spaceFromObject, hit.Ng);
     if (const auto* curves = std::get_if<CurveSet>(&geometry))

@@ -115,11 +115,14 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
     return hit;
 }
 
-ObjectHit EvaluateQuadric(const QuadricShape& shape, float u, float v) {
+ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP) {
     ObjectHit hit;
-    hit.geometry = shape.quadric->Evaluate(u, v);
+    hit.geometry = shape.quadric->EvaluateAt(objectP);
     hit.N = hit.geometry.Ng;
-    hit.stencils.varying = hit.stencils.vertex = hit.stencils.faceVarying = Bilinear4(u, v);
+    // The primitive's N, where it gives one, and everything else through the bilinear stencils
+    // of the four (u, v) corners.
+    hit.stencils.varying = hit.stencils.vertex = hit.stencils.faceVarying =
+        Bilinear4(hit.geometry.u, hit.geometry.v);
     if (const PrimVar* n = shape.vars.Find("N")) {
         float value[3];
         InterpolatePrimVar(*n, hit.stencils, value);

@@ -33,7 +33,8 @@ struct ObjectHit {
 
 // `primID`, (b1, b2): Embree's triangle and barycentrics.
 ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
-ObjectHit EvaluateQuadric(const QuadricShape& shape, float u, float v);
+// At a point the quadric's IntersectPoint reported (Quadric::EvaluateAt).
+ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP);
 // `objectP`: the hit point; curves and points have no (u,v) surface of their own to evaluate.
 ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float v,
                         const Imath::V3f& objectP, const Imath::V3f& objectNg);
