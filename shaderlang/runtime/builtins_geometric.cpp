@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 #include "shaderlang/runtime/builtins_util.h"
 #include "shaderlang/runtime/globals_view.h"
@@ -32,7 +33,28 @@ void LengthKernel(const BuiltinCall& call) {
     ForEachPoint(call, [&](int p) { call.result.At(0, p) = Triple(call.args[0], p).length(); });
 }
 
+// True when a kernel may compute every point of the batch plane by plane: no mask (so no point
+// is left untouched) and every operand varying.
+bool AllPointsVarying(const BuiltinCall& call, std::initializer_list<FloatArg> operands) {
+    if (call.active || !call.result.varying) return false;
+    for (const FloatArg& a : operands) {
+        if (!a.varying) return false;
+    }
+    return true;
+}
+
+// normalize() over whole planes, a chunk of points at a time.
+void NormalizePlanes(const FloatArg& in, const FloatArg& out) {
+    const int n = in.n;
+    for (int start = 0; start < n; start += kChunk) {
+        const float* x = in.data + start;
+        float* o = out.data + start;
+        NormalizeChunk(x, x + n, x + 2 * n, std::min(kChunk, n - start), o, o + n, o + 2 * n);
+    }
+}
+
 void NormalizeKernel(const BuiltinCall& call) {
+    if (AllPointsVarying(call, {call.args[0]})) return NormalizePlanes(call.args[0], call.result);
     ForEachPoint(call,
                  [&](int p) { SetTriple(call.result, p, Normalized(Triple(call.args[0], p))); });
 }
@@ -72,12 +94,37 @@ void RotateKernel(const BuiltinCall& call) {
 
 // ---- shading geometry ----------------------------------------------------------------------
 
+// faceforward() over whole planes, bit for bit the per-point code below, a chunk of points at a
+// time in loops the compiler vectorises: the signs, then a select per plane (few pointers per
+// loop, so the aliasing checks stay within what the vectoriser versions for).
+void FaceforwardPlanes(const FloatArg& nArg, const FloatArg& iArg, const FloatArg& nrefArg,
+                       const FloatArg& out) {
+    const int n = nArg.n;
+    for (int start = 0; start < n; start += kChunk) {
+        const int count = std::min(kChunk, n - start);
+        const float *ix = iArg.data + start, *iy = ix + n, *iz = iy + n;
+        const float *rx = nrefArg.data + start, *ry = rx + n, *rz = ry + n;
+        float sign[kChunk];
+        for (int p = 0; p < count; ++p) {
+            const bool flip = (-ix[p]) * rx[p] + (-iy[p]) * ry[p] + (-iz[p]) * rz[p] < 0.0f;
+            sign[p] = flip ? -1.0f : 1.0f;
+        }
+        for (int c = 0; c < 3; ++c) {
+            const float* in = nArg.data + size_t(c) * n + start;
+            float* o = out.data + size_t(c) * n + start;
+            for (int p = 0; p < count; ++p) o[p] = sign[p] < 0.0f ? -in[p] : in[p];
+        }
+    }
+}
+
 // faceforward(N, I [, Nref]): N flipped, if need be, to point against I as seen from Nref
 // (the global Ng when Nref is absent).
 void FaceforwardKernel(const BuiltinCall& call) {
     const FloatArg nrefArg = call.argCount >= 3 ? call.args[2]
                              : call.globals     ? call.globals->Get("Ng")
                                                 : FloatArg{};
+    if (nrefArg.data && AllPointsVarying(call, {call.args[0], call.args[1], nrefArg}))
+        return FaceforwardPlanes(call.args[0], call.args[1], nrefArg, call.result);
     ForEachPoint(call, [&](int p) {
         V3 n = Triple(call.args[0], p), i = Triple(call.args[1], p);
         V3 nref = nrefArg.data ? Triple(nrefArg, p) : n;

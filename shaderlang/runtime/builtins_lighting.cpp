@@ -54,20 +54,28 @@ void ClearResult(const BuiltinCall& call) {
     });
 }
 
-// max(0, N·H)^(kSpecularExponentScale / roughness), H = normalize(ln + view); inlined into the
-// specular() loop.
-inline float SpecularLobe(const V3& ln, const V3& normal, const V3& view, float roughness) {
+// max(0, N·H)^exponent, H = normalize(ln + view); inlined into the specular() loop.
+inline float SpecularLobeWithExponent(const V3& ln, const V3& normal, const V3& view,
+                                      float exponent) {
     V3 h = Normalized(ln + view);
-    return std::pow(std::max(0.0f, Dot(normal, h)), kSpecularExponentScale / roughness);
+    return std::pow(std::max(0.0f, Dot(normal, h)), exponent);
+}
+
+inline float SpecularLobe(const V3& ln, const V3& normal, const V3& view, float roughness) {
+    return SpecularLobeWithExponent(ln, normal, view, kSpecularExponentScale / roughness);
 }
 
 // Sums weight(p, normalize(L), N) · Cl over the non-ambient lights that reach each point with
-// N·normalize(L) ≥ 0 (the cone test Aqsis does).
+// N·normalize(L) ≥ 0 (the cone test Aqsis does). normalize(L) is computed a chunk of points at a
+// time (NormalizeChunk vectorises it), the rest point by point.
 template <typename Weight>
 void SumOverLights(const BuiltinCall& call, const FloatArg& normalArg, Weight weight) {
     ClearResult(call);
     if (!call.context) return;
     const int n = call.n, width = call.result.width;
+    // As ForEachPoint: a fully uniform call computes point 0 only, whatever the mask says.
+    const bool varying = IsVaryingCall(call);
+    const int points = varying ? n : 1;
     const TripleReader normals(normalArg);
     float* out = call.result.data;
     const int outStep = call.result.varying ? 1 : 0, outPlane = call.result.varying ? n : 1;
@@ -76,25 +84,29 @@ void SumOverLights(const BuiltinCall& call, const FloatArg& normalArg, Weight we
         const float *Lx = light.L.data(), *Ly = Lx + n, *Lz = Ly + n;
         const float* Cl = light.Cl.data();
         const uint8_t* lit = light.lit.empty() ? nullptr : light.lit.data();
-        auto add = [&](int p, const V3& ln, const V3& normal) {
-            if (Dot(ln, normal) < 0.0f) return;
-            const float w = weight(p, ln, normal);
-            for (int c = 0; c < width; ++c) out[c * outPlane + p * outStep] += w * Cl[c * n + p];
-        };
-        if (light.fromAllDirections.empty()) {
-            ForEachPoint(call, [&](int p) {
-                if (!lit || lit[p]) add(p, Normalized(V3(Lx[p], Ly[p], Lz[p])), normals(p));
-            });
-            continue;
-        }
         // Light from all directions (solar() without an axis) arrives along N itself, as it
         // would along an illuminance loop's axis (see OpIllumNext).
-        const uint8_t* all = light.fromAllDirections.data();
-        ForEachPoint(call, [&](int p) {
-            if (lit && !lit[p]) return;
-            const V3 normal = normals(p);
-            add(p, Normalized(all[p] ? normal : V3(Lx[p], Ly[p], Lz[p])), normal);
-        });
+        const uint8_t* all =
+            light.fromAllDirections.empty() ? nullptr : light.fromAllDirections.data();
+        for (int start = 0; start < points; start += kChunk) {
+            const int count = std::min(kChunk, points - start);
+            float lx[kChunk], ly[kChunk], lz[kChunk];
+            for (int i = 0; i < count; ++i) {
+                const int p = start + i;
+                const V3 l = all && all[p] ? normals(p) : V3(Lx[p], Ly[p], Lz[p]);
+                lx[i] = l.x, ly[i] = l.y, lz[i] = l.z;
+            }
+            NormalizeChunk(lx, ly, lz, count, lx, ly, lz);
+            for (int i = 0; i < count; ++i) {
+                const int p = start + i;
+                if ((varying && !call.IsActive(p)) || (lit && !lit[p])) continue;
+                const V3 ln(lx[i], ly[i], lz[i]), normal = normals(p);
+                if (Dot(ln, normal) < 0.0f) continue;
+                const float w = weight(p, ln, normal);
+                for (int c = 0; c < width; ++c)
+                    out[c * outPlane + p * outStep] += w * Cl[c * n + p];
+            }
+        }
     }
 }
 
@@ -120,6 +132,14 @@ void DiffuseKernel(const BuiltinCall& call) {
 void SpecularKernel(const BuiltinCall& call) {
     const TripleReader view(call.args[1]);
     const FloatReader roughness(call.args[2]);
+    // A uniform roughness (the usual case) gives one exponent for the whole call.
+    if (!call.args[2].varying) {
+        const float exponent = kSpecularExponentScale / roughness(0);
+        SumOverLights(call, call.args[0], [&](int p, const V3& ln, const V3& normal) {
+            return SpecularLobeWithExponent(ln, normal, view(p), exponent);
+        });
+        return;
+    }
     SumOverLights(call, call.args[0], [&](int p, const V3& ln, const V3& normal) {
         return SpecularLobe(ln, normal, view(p), roughness(p));
     });

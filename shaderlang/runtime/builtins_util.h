@@ -6,7 +6,9 @@
 #include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>
 
+#include <cmath>
 #include <deque>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,30 @@ inline float Dot(const V3& a, const V3& b) { return a.dot(b); }
 inline V3 Normalized(const V3& v) {
     float len = v.length();
     return len > 0.0f ? v / len : v;
+}
+
+// The points a plane-wise kernel handles at once, so that its temporaries stay on the stack.
+constexpr int kChunk = 64;
+
+// Normalizes count (at most kChunk) vectors given as planes, bit for bit as Normalized() does
+// each (Imath's length(), then three divisions), in loops the compiler vectorises: the squared
+// lengths, the divisions. Only the square root stays scalar (it may set errno, so it does not
+// vectorise), along with Imath's rescaled length of tiny vectors. The output may be the input.
+inline void NormalizeChunk(const float* x, const float* y, const float* z, int count, float* ox,
+                           float* oy, float* oz) {
+    float divisor[kChunk];
+    for (int p = 0; p < count; ++p) divisor[p] = x[p] * x[p] + y[p] * y[p] + z[p] * z[p];
+    for (int p = 0; p < count; ++p) {
+        const float length2 = divisor[p];
+        const float length = length2 < 2.0f * std::numeric_limits<float>::min()
+                                 ? V3(x[p], y[p], z[p]).length()
+                                 : std::sqrt(length2);
+        // A zero (or NaN) length leaves the vector as it is: dividing by 1 does that exactly.
+        divisor[p] = length > 0.0f ? length : 1.0f;
+    }
+    for (int p = 0; p < count; ++p) ox[p] = x[p] / divisor[p];
+    for (int p = 0; p < count; ++p) oy[p] = y[p] / divisor[p];
+    for (int p = 0; p < count; ++p) oz[p] = z[p] / divisor[p];
 }
 
 // Rows of the built-in table. Signature strings are interned so generated overloads (min with

@@ -444,6 +444,25 @@ void OpColorCast(ExecState& x, const Instr& in) {
     if (unknown) x.Warn(in, "unknown color space '" + space + "' (taken as rgb)");
 }
 
+namespace {
+
+// Results almost never hold a NaN: a scan of the bit patterns, which the compiler vectorises,
+// first, the per-point mask only when it found one. A float is a NaN when its magnitude bits,
+// as a signed integer, exceed those of infinity, 0x7f800000. A register's floats are contiguous
+// (all its planes, or its one element).
+bool MayHoldNaN(const FloatArg& r) {
+    const size_t count = size_t(r.width) * (r.varying ? size_t(r.n) : 1);
+    int found = 0;
+    for (size_t i = 0; i < count; ++i) {
+        int32_t bits;
+        std::memcpy(&bits, &r.data[i], sizeof bits);
+        found |= (bits & 0x7fffffff) > 0x7f800000;
+    }
+    return found != 0;
+}
+
+}  // namespace
+
 void OpCall(ExecState& x, const Instr& in) {
     const Program& p = *x.program;
     const int* list = &p.callArgs[in.extra];
@@ -479,23 +498,12 @@ void OpCall(ExecState& x, const Instr& in) {
     }
     info.kernel(call);
     // NaNs (sqrt(-1), acos(2), ...) are reported once per line, not per point.
-    if (result >= 0 && !p.regs[result].isString) {
+    if (result >= 0 && !p.regs[result].isString && MayHoldNaN(call.result)) {
         const FloatArg& r = call.result;
         const int points = r.varying ? x.n : 1;
         for (int c = 0; c < r.width; ++c) {
-            const float* plane = r.data + (r.varying ? size_t(c) * x.n : size_t(c));
-            // Results almost never hold a NaN: a scan of the bit patterns (an integer max the
-            // compiler vectorises) first, the per-point mask only when it found one. A float
-            // is a NaN when its magnitude bits exceed those of infinity, 0x7f800000.
-            uint32_t largest = 0;
             for (int i = 0; i < points; ++i) {
-                uint32_t bits;
-                std::memcpy(&bits, &plane[i], sizeof bits);
-                largest = std::max(largest, bits & 0x7fffffffu);
-            }
-            if (largest <= 0x7f800000u) continue;
-            for (int i = 0; i < points; ++i) {
-                if (std::isnan(plane[i]) && (!r.varying || x.Active(call.active, i))) {
+                if (std::isnan(r.At(c, i)) && (!r.varying || x.Active(call.active, i))) {
                     x.Warn(in, std::string("NaN from ") + info.name + "()");
                     return;
                 }
