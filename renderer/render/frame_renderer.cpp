@@ -36,7 +36,7 @@ int OutputFloats(const std::vector<ShaderOutput>& outputs) {
 // colour is composited front to back over several layers of hits.
 struct SampleState {
     CameraRay ray;
-    int px, py, s;
+    int px, py;
     float x, y;
     float lensU = 0, lensV = 0;
     float colour[3] = {0, 0, 0};
@@ -262,7 +262,7 @@ class SampleGenerator {
     SampleState MakeSample(int px, int py, int sx, int sy, int s) const {
         SampleRandom random(seed_, px, py, s);
         SampleState sample;
-        sample.px = px, sample.py = py, sample.s = s;
+        sample.px = px, sample.py = py;
         sample.randomSeed = random.Seed();
         sample.outputs.assign(size_t(outputFloats_), 0.f);
         sample.x = px + (sx + random.Next()) / xsamples_;

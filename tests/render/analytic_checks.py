@@ -453,15 +453,16 @@ def render_in_folder(gonio, folder, shaders, scene):
     return None
 
 
-def run_checks(checks, workspace):
-    """Runs each check on the workspace in turn, printing ok or FAIL with the reason for each and
-    a summary; returns the exit status (1 when any failed)."""
+def run_checks(checks, subject):
+    """Runs each check on `subject` (a Workspace, or the images the checks read) in turn,
+    printing ok or FAIL with the reason for each and a summary; returns the exit status (1 when
+    any failed). A pixel the images lack (KeyError) fails its check like a failed expectation."""
     failures = 0
     for check in checks:
         try:
-            check(workspace)
+            check(subject)
             print(f"ok   {check.__name__}")
-        except CheckFailed as error:
+        except (CheckFailed, KeyError) as error:
             print(f"FAIL {check.__name__}\n     {error}")
             failures += 1
     print(f"{len(checks) - failures} of {len(checks)} checks passed")

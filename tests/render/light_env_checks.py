@@ -22,7 +22,7 @@ import subprocess
 import sys
 import tempfile
 
-from analytic_checks import CheckFailed, expect, read_images, render_in_folder
+from analytic_checks import expect, read_images, render_in_folder, run_checks
 
 SHADERS = {
     # Gathers light at P moved towards the camera (world -z) by `dz` where x > `from_x`.
@@ -172,7 +172,6 @@ def main():
     parser.add_argument("--gonio", required=True)
     args = parser.parse_args()
     gonio = os.path.abspath(args.gonio)
-    failures = 0
     with tempfile.TemporaryDirectory(prefix="gonio_light_env_") as folder:
         make_environment(folder)
         failure = render_in_folder(gonio, folder, SHADERS, scene_text())
@@ -181,16 +180,7 @@ def main():
             return 1
         paths = [os.path.join(folder, name + ".exr") for name in FRAMES]
         images = dict(zip(FRAMES, read_images(*paths)))
-        for check in CHECKS:
-            try:
-                check(images)
-                print(f"ok   {check.__name__}")
-            except (CheckFailed, KeyError) as error:
-                failures += 1
-                print(f"FAIL {check.__name__}: {error}")
-    print(f"{failures} of {len(CHECKS)} checks failed" if failures else
-          f"all {len(CHECKS)} passed")
-    return 1 if failures else 0
+        return run_checks(CHECKS, images)
 
 
 if __name__ == "__main__":
