@@ -52,7 +52,54 @@ struct SampleState {
     std::vector<float> outputs;
 };
 
-// The samples of one tile, shaded layer by layer in batches that share attributes.
+// The camera samples of a tile's pixels: stratified, one jittered sample in each cell of the
+// pixel's xsamples x ysamples grid, with lens position and time, all drawn from a random stream
+// seeded by the render's seed, the pixel and the sample, so they never depend on threads.
+class SampleGenerator {
+  public:
+    SampleGenerator(uint64_t seed, int xsamples, int ysamples, const Options& options,
+                    const Camera& camera, int outputFloats)
+        : seed_(seed),
+          xsamples_(xsamples),
+          ysamples_(ysamples),
+          shutterOpen_(options.shutterOpen),
+          shutterLength_(std::max(0.f, options.shutterClose - options.shutterOpen)),
+          camera_(camera),
+          outputFloats_(outputFloats) {}
+
+    void AddSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
+        for (int py = pixels.min.y; py <= pixels.max.y; ++py)
+            for (int px = pixels.min.x; px <= pixels.max.x; ++px)
+                for (int sy = 0, s = 0; sy < ysamples_; ++sy)
+                    for (int sx = 0; sx < xsamples_; ++sx, ++s)
+                        samples->push_back(MakeSample(px, py, sx, sy, s));
+    }
+
+  private:
+    SampleState MakeSample(int px, int py, int sx, int sy, int s) const {
+        SampleRandom random(seed_, px, py, s);
+        SampleState sample;
+        sample.px = px, sample.py = py;
+        sample.randomSeed = random.Seed();
+        sample.outputs.assign(size_t(outputFloats_), 0.f);
+        sample.x = px + (sx + random.Next()) / xsamples_;
+        sample.y = py + (sy + random.Next()) / ysamples_;
+        sample.lensU = random.Next(), sample.lensV = random.Next();
+        const float time = shutterOpen_ + random.Next() * shutterLength_;
+        sample.ray = camera_.GenerateRay(sample.x, sample.y, sample.lensU, sample.lensV, time);
+        return sample;
+    }
+
+    uint64_t seed_;
+    int xsamples_, ysamples_;
+    float shutterOpen_, shutterLength_;
+    const Camera& camera_;
+    int outputFloats_;
+};
+
+// The samples of one tile, shaded layer by layer in batches that share attributes. One per
+// thread: its buffers are reused from tile to tile, as allocating them per tile made the kernel
+// fault their pages in again each time.
 class TileRenderer {
   public:
     TileRenderer(const RayScene& scene, const Camera& camera, ShadingWorker& shading,
@@ -65,16 +112,32 @@ class TileRenderer {
           ncomps_(options.colorComponents),
           colorToRgb_(options.colorToRgb) {}
 
-    uint64_t Render(std::vector<SampleState>& samples);
+    // Renders the samples of `pixels` into `film`; returns the number of rays traced.
+    uint64_t Render(const Imath::Box2i& pixels, const SampleGenerator& generator, FilmTile* film);
 
   private:
+    void TraceAndShade();
+    void Splat(FilmTile* film);
+
+    std::vector<SampleState> samples_;
     // Reused from layer to layer so that their colour storage is allocated once.
     std::vector<SurfacePoint> points_;
+    std::vector<int> hitSamples_;
+    std::vector<float> hitT_, hitTnear_;
+    // ShadeLayer's batches: the hits of each Attributes, in order of first appearance.
+    struct Group {
+        const Attributes* attributes;
+        std::vector<int> members;
+    };
+    std::vector<Group> groups_;
+    std::unordered_map<const Attributes*, size_t> groupIndex_;
+    ShadingBatch batch_;
+    std::vector<float> Ci_, Oi_, outputValues_, filmValues_;
     // The next visible (not back-face culled) hit of a sample, or false.
     bool NextHit(SampleState& sample, SurfacePoint* sp, float* t);
-    void ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
-                    const std::vector<SurfacePoint>& points, const std::vector<float>& hitT,
-                    const std::vector<float>& hitTnear);
+    void ShadeLayer();
+    // Sorts the layer's hits into groups_ by their attributes; returns how many groups.
+    size_t GroupHits();
     // The rays one pixel to the right and one down from a sample's, through the same point of
     // the lens at the same time: the ray differentials of shaders that take derivatives.
     NeighbourRays MakeNeighbourRays(const SampleState& sample, float tnear) const;
@@ -129,33 +192,53 @@ bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
     }
 }
 
-uint64_t TileRenderer::Render(std::vector<SampleState>& samples) {
+uint64_t TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& generator,
+                              FilmTile* film) {
     rays_ = 0;
-    std::vector<int> hitSamples;
-    std::vector<float> hitT, hitTnear;
-    if (points_.size() < samples.size()) points_.resize(samples.size());
+    samples_.clear();
+    generator.AddSamples(pixels, &samples_);
+    TraceAndShade();
+    Splat(film);
+    return rays_;
+}
+
+void TileRenderer::TraceAndShade() {
+    if (points_.size() < samples_.size()) points_.resize(samples_.size());
     for (int layer = 0; layer < kMaxLayers; ++layer) {
-        hitSamples.clear();
-        hitT.clear();
-        hitTnear.clear();
-        for (int i = 0; i < int(samples.size()); ++i) {
-            SampleState& sample = samples[i];
+        hitSamples_.clear();
+        hitT_.clear();
+        hitTnear_.clear();
+        for (int i = 0; i < int(samples_.size()); ++i) {
+            SampleState& sample = samples_[i];
             if (!sample.alive) continue;
             const float tnear = sample.ray.tnear;
             float t;
-            if (!NextHit(sample, &points_[hitSamples.size()], &t)) {
+            if (!NextHit(sample, &points_[hitSamples_.size()], &t)) {
                 sample.alive = false;
                 continue;
             }
             if (std::isinf(sample.depth)) sample.depth = t;
-            hitSamples.push_back(i);
-            hitT.push_back(t);
-            hitTnear.push_back(tnear);
+            hitSamples_.push_back(i);
+            hitT_.push_back(t);
+            hitTnear_.push_back(tnear);
         }
-        if (hitSamples.empty()) break;
-        ShadeLayer(samples, hitSamples, points_, hitT, hitTnear);
+        if (hitSamples_.empty()) break;
+        ShadeLayer();
     }
-    return rays_;
+}
+
+void TileRenderer::Splat(FilmTile* film) {
+    filmValues_.resize(kStandardChannelCount + size_t(outputFloats_));
+    for (const SampleState& sample : samples_) {
+        filmValues_[kChannelR] = sample.colour[0];
+        filmValues_[kChannelG] = sample.colour[1];
+        filmValues_[kChannelB] = sample.colour[2];
+        filmValues_[kChannelA] = sample.alpha;
+        filmValues_[kChannelZ] = sample.depth;
+        std::copy(sample.outputs.begin(), sample.outputs.end(),
+                  filmValues_.begin() + kStandardChannelCount);
+        film->AddSample(sample.px, sample.py, sample.x, sample.y, filmValues_.data());
+    }
 }
 
 NeighbourRays TileRenderer::MakeNeighbourRays(const SampleState& sample, float tnear) const {
@@ -171,50 +254,62 @@ NeighbourRays TileRenderer::MakeNeighbourRays(const SampleState& sample, float t
     return rays;
 }
 
-void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vector<int>& hitSamples,
-                              const std::vector<SurfacePoint>& points,
-                              const std::vector<float>& hitT, const std::vector<float>& hitTnear) {
-    // Batches of points that share their attributes, in a fixed order (first appearance), so
-    // that results do not depend on threads.
-    std::vector<const Attributes*> order;
-    std::unordered_map<const Attributes*, std::vector<int>> members;
-    for (int k = 0; k < int(hitSamples.size()); ++k) {
-        const Attributes* attributes = points[k].attributes;
-        auto [it, isNew] = members.try_emplace(attributes);
-        if (isNew) order.push_back(attributes);
-        it->second.push_back(k);
+size_t TileRenderer::GroupHits() {
+    // A fixed order (first appearance), so that results do not depend on threads.
+    groupIndex_.clear();
+    size_t used = 0;
+    for (int k = 0; k < int(hitSamples_.size()); ++k) {
+        const Attributes* attributes = points_[k].attributes;
+        auto [it, isNew] = groupIndex_.try_emplace(attributes, used);
+        if (isNew) {
+            if (used == groups_.size()) groups_.emplace_back();
+            groups_[used].attributes = attributes;
+            groups_[used].members.clear();
+            ++used;
+        }
+        groups_[it->second].members.push_back(k);
     }
-    std::vector<float> Ci, Oi, outputs;
-    for (const Attributes* attributes : order) {
-        const std::vector<int>& batchMembers = members[attributes];
-        ShadingBatch batch;
+    return used;
+}
+
+void TileRenderer::ShadeLayer() {
+    const size_t groups = GroupHits();
+    for (size_t g = 0; g < groups; ++g) {
+        const Attributes* attributes = groups_[g].attributes;
+        const std::vector<int>& batchMembers = groups_[g].members;
+        ShadingBatch& batch = batch_;
         batch.attributes = attributes;
+        batch.points.clear();
+        batch.incident.clear();
+        batch.depth.clear();
+        batch.neighbourRays.clear();
+        batch.randomSeeds.clear();
         const bool neighbours = !attributes->matte && shading_.WantsNeighbourRays(attributes);
         for (int k : batchMembers) {
-            const SampleState& sample = samples[hitSamples[k]];
-            batch.points.push_back(&points[k]);
-            batch.incident.push_back(sample.ray.dir * hitT[k]);
-            batch.depth.push_back(hitT[k]);
-            if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hitTnear[k]));
+            const SampleState& sample = samples_[hitSamples_[k]];
+            batch.points.push_back(&points_[k]);
+            batch.incident.push_back(sample.ray.dir * hitT_[k]);
+            batch.depth.push_back(hitT_[k]);
+            if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hitTnear_[k]));
             batch.randomSeeds.push_back(sample.randomSeed);
         }
-        Ci.assign(batchMembers.size() * ncomps_, 0.f);
-        Oi.assign(batchMembers.size() * ncomps_, 0.f);
+        Ci_.assign(batchMembers.size() * ncomps_, 0.f);
+        Oi_.assign(batchMembers.size() * ncomps_, 0.f);
         if (outputFloats_ > 0) {
-            outputs.assign(batchMembers.size() * outputFloats_, 0.f);
+            outputValues_.assign(batchMembers.size() * outputFloats_, 0.f);
             batch.outputs = &outputs_;
-            batch.outputValues = outputs.data();
+            batch.outputValues = outputValues_.data();
         }
-        if (!attributes->matte) shading_.Shade(batch, Ci.data(), Oi.data());
+        if (!attributes->matte) shading_.Shade(batch, Ci_.data(), Oi_.data());
         for (size_t j = 0; j < batchMembers.size(); ++j) {
-            SampleState& sample = samples[hitSamples[batchMembers[j]]];
+            SampleState& sample = samples_[hitSamples_[batchMembers[j]]];
             sample.randomSeed = Mix64(sample.randomSeed);  // the next layer's
             // A matte object hides what lies behind it and adds nothing itself (RISpec
             // §4.2.5): its opacity is the surface's Os, not a shader's output.
             const float* opacities =
-                attributes->matte ? points[batchMembers[j]].Os.data() : &Oi[j * ncomps_];
+                attributes->matte ? points_[batchMembers[j]].Os.data() : &Oi_[j * ncomps_];
             float rgb[3], opacityRgb[3];
-            ToRgb(&Ci[j * ncomps_], rgb);
+            ToRgb(&Ci_[j * ncomps_], rgb);
             OpacityToRgb(opacities, opacityRgb);
             float remaining = 0, covered = 0;
             for (int c = 0; c < 3; ++c) {
@@ -230,55 +325,10 @@ void TileRenderer::ShadeLayer(std::vector<SampleState>& samples, const std::vect
             // AOVs are not premultiplied: each layer adds its value weighted by the coverage
             // it adds, so an opaque surface's AOV is its value.
             for (int k = 0; k < outputFloats_; ++k)
-                sample.outputs[k] += covered * outputs[j * outputFloats_ + k];
+                sample.outputs[k] += covered * outputValues_[j * outputFloats_ + k];
         }
     }
 }
-
-// The camera samples of a tile's pixels: stratified, one jittered sample in each cell of the
-// pixel's xsamples x ysamples grid, with lens position and time, all drawn from a random stream
-// seeded by the render's seed, the pixel and the sample, so they never depend on threads.
-class SampleGenerator {
-  public:
-    SampleGenerator(uint64_t seed, int xsamples, int ysamples, const Options& options,
-                    const Camera& camera, int outputFloats)
-        : seed_(seed),
-          xsamples_(xsamples),
-          ysamples_(ysamples),
-          shutterOpen_(options.shutterOpen),
-          shutterLength_(std::max(0.f, options.shutterClose - options.shutterOpen)),
-          camera_(camera),
-          outputFloats_(outputFloats) {}
-
-    void AddSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
-        for (int py = pixels.min.y; py <= pixels.max.y; ++py)
-            for (int px = pixels.min.x; px <= pixels.max.x; ++px)
-                for (int sy = 0, s = 0; sy < ysamples_; ++sy)
-                    for (int sx = 0; sx < xsamples_; ++sx, ++s)
-                        samples->push_back(MakeSample(px, py, sx, sy, s));
-    }
-
-  private:
-    SampleState MakeSample(int px, int py, int sx, int sy, int s) const {
-        SampleRandom random(seed_, px, py, s);
-        SampleState sample;
-        sample.px = px, sample.py = py;
-        sample.randomSeed = random.Seed();
-        sample.outputs.assign(size_t(outputFloats_), 0.f);
-        sample.x = px + (sx + random.Next()) / xsamples_;
-        sample.y = py + (sy + random.Next()) / ysamples_;
-        sample.lensU = random.Next(), sample.lensV = random.Next();
-        const float time = shutterOpen_ + random.Next() * shutterLength_;
-        sample.ray = camera_.GenerateRay(sample.x, sample.y, sample.lensU, sample.lensV, time);
-        return sample;
-    }
-
-    uint64_t seed_;
-    int xsamples_, ysamples_;
-    float shutterOpen_, shutterLength_;
-    const Camera& camera_;
-    int outputFloats_;
-};
 
 PixelFilter MakeFilter(const Options& options, Diagnostics& diagnostics) {
     std::string error;
@@ -376,28 +426,14 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const SampleGenerator generator(settings.seed, xsamples, ysamples, options, camera,
                                     OutputFloats(outputs));
     tbb::parallel_for(tbb::blocked_range<int>(0, film.TileCount(), 1), [&](const auto& tiles) {
-        std::vector<SampleState> samples;
         for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
             const Imath::Box2i pixels = film.TilePixels(tile);
-            samples.clear();
-            generator.AddSamples(pixels, &samples);
             auto& renderer = renderers.local();
             if (!renderer)
                 renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options,
                                                           outputs);
-            raysTraced += renderer->Render(samples);
             FilmTile filmTile = film.StartTile(tile);
-            std::vector<float> values(kStandardChannelCount + OutputFloats(outputs));
-            for (const SampleState& sample : samples) {
-                values[kChannelR] = sample.colour[0];
-                values[kChannelG] = sample.colour[1];
-                values[kChannelB] = sample.colour[2];
-                values[kChannelA] = sample.alpha;
-                values[kChannelZ] = sample.depth;
-                std::copy(sample.outputs.begin(), sample.outputs.end(),
-                          values.begin() + kStandardChannelCount);
-                filmTile.AddSample(sample.px, sample.py, sample.x, sample.y, values.data());
-            }
+            raysTraced += renderer->Render(pixels, generator, &filmTile);
             film.StoreTile(std::move(filmTile));
             progress.Advance(uint64_t(pixels.max.x - pixels.min.x + 1) *
                              (pixels.max.y - pixels.min.y + 1));
