@@ -42,6 +42,7 @@ void IncludeArc(const V2d& q, double sweep, bool full, double zlo, double zhi, B
 RevolvedQuadric::RevolvedQuadric(double thetamaxDegrees)
     : thetaMax_(Radians(thetamaxDegrees)), fullSweep_(std::fabs(thetamaxDegrees) >= 360) {
     if (thetamaxDegrees == 0) degenerate_ = true;
+    if (!fullSweep_) sweep_ = AngleRange(0, thetaMax_);
 }
 
 void RevolvedQuadric::SetDegenerate() { degenerate_ = true; }
@@ -76,11 +77,36 @@ void RevolvedQuadric::SetBoundingBall(const V3d& centre, double radius) {
     ballRadius2_ = radius * radius;
 }
 
-bool RevolvedQuadric::ThetaParameter(const V3d& p, double profileAngle, double slack,
+void RevolvedQuadric::SetSphericalSurface(double radius) {
+    SetBoundingBall(V3d(0, 0, 0), radius);
+    spherical_ = true;
+    sphereRadius2_ = radius * radius;
+}
+
+int RevolvedQuadric::ProfileDirections(const V3d& p, V2d along[2]) const {
+    ProfileCandidate candidates[2];
+    const int m = ProfileCandidates(p, 0, candidates);
+    for (int j = 0; j < m; ++j) along[j] = candidates[j].along;
+    return m;
+}
+
+namespace {
+
+// The xy part of p in the frame whose x axis points along `along` (scaled by |along|): its
+// angle is the sweep that carries a profile point in that direction onto p.
+V2d InProfileFrame(const V3d& p, const V2d& along) {
+    // Profiles in the xz plane (the common case) exactly, without products that vanish.
+    if (along.y == 0) return V2d(along.x * p.x, along.x * p.y);
+    return V2d(along.x * p.x + along.y * p.y, along.x * p.y - along.y * p.x);
+}
+
+}  // namespace
+
+bool RevolvedQuadric::ThetaParameter(const V3d& p, const V2d& along, double slack,
                                      double* u) const {
-    const double psi = std::atan2(p.y, p.x);
     // How far the sweep has turned to carry the profile point onto p, in the sweep's sense.
-    double theta = thetaMax_ >= 0 ? psi - profileAngle : profileAngle - psi;
+    const V2d q = InProfileFrame(p, along);
+    double theta = Atan2(SignOf(thetaMax_) * q.y, q.x);
     if (theta < 0) theta += 2 * kPi;
     // A point a rounding error short of a full turn lies on the sweep's starting edge.
     if (theta >= 2 * kPi - 1e-12) theta = 0;
@@ -97,12 +123,27 @@ bool RevolvedQuadric::ThetaParameter(const V3d& p, double profileAngle, double s
 
 bool RevolvedQuadric::OnShape(const V3d& p) const {
     if (everyRootOnShape_) return true;
-    ProfileCandidate candidates[2];
-    const int m = ProfileCandidates(p, 0, candidates);
-    double u;
-    for (int j = 0; j < m; ++j)
-        if (fullSweep_ || ThetaParameter(p, candidates[j].angle, 0, &u)) return true;
+    V2d along[2];
+    const int m = ProfileDirections(p, along);
+    for (int j = 0; j < m; ++j) {
+        const V2d q = InProfileFrame(p, along[j]);
+        if (sweep_.Contains(q.x, q.y)) return true;
+    }
     return false;
+}
+
+int RevolvedQuadric::SphereRoots(double missed2, double dd, double lo, double hi,
+                                 double t[2]) const {
+    // The ray's line passes the centre at the distance √(missed2/dd) and crosses the sphere
+    // half a chord, √(r² − missed2/dd), to either side of its nearest point.
+    const double h2 = sphereRadius2_ * dd - missed2;
+    if (!(h2 >= 0)) return 0;
+    // 1/dd runs beside the square root instead of after it.
+    const double half = std::sqrt(h2) * (1 / dd);
+    int n = 0;
+    if (-half > lo && -half < hi) t[n++] = -half;
+    if (half > lo && half < hi) t[n++] = half;
+    return n;
 }
 
 bool RevolvedQuadric::IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax,
@@ -118,16 +159,26 @@ bool RevolvedQuadric::IntersectPoint(const V3f& org, const V3f& dir, float tmin,
     // |w × d|² / |d|² is the squared distance of the ray's line from the ball's centre
     // (Lagrange's identity: no cancellation for rays from far away).
     const V3d w = o - ballCentre_;
-    if (w.cross(d).length2() > ballRadius2_ * dd) return false;
-    // Likewise the infinite cylinder ρ ≤ ρmax about the axis of revolution, which holds a long
-    // cylinder far more tightly than any ball: seen along z, the line passes the axis at the
-    // distance |o.x·d.y − o.y·d.x| / |d.xy|.
-    const double across = o.x * d.y - o.y * d.x;
-    if (across * across > rhoMax2_ * (d.x * d.x + d.y * d.y)) return false;
-    const double t0 = (center_ - o).dot(d) / dd;
-    const V3d origin = o + t0 * d;
+    const double missed2 = w.cross(d).length2();
+    if (missed2 > ballRadius2_ * dd) return false;
     double roots[4];
-    const int n = RayRoots(origin, d, double(tmin) - t0, double(tmax) - t0, roots);
+    int n;
+    double t0;
+    V3d origin;
+    if (spherical_) {
+        t0 = -w.dot(d) / dd;
+        origin = o + t0 * d;
+        n = SphereRoots(missed2, dd, double(tmin) - t0, double(tmax) - t0, roots);
+    } else {
+        // Likewise the infinite cylinder ρ ≤ ρmax about the axis of revolution, which holds a
+        // long cylinder far more tightly than any ball: seen along z, the line passes the axis
+        // at the distance |o.x·d.y − o.y·d.x| / |d.xy|.
+        const double across = o.x * d.y - o.y * d.x;
+        if (across * across > rhoMax2_ * (d.x * d.x + d.y * d.y)) return false;
+        t0 = (center_ - o).dot(d) / dd;
+        origin = o + t0 * d;
+        n = RayRoots(origin, d, double(tmin) - t0, double(tmax) - t0, roots);
+    }
     for (int i = 0; i < n; ++i) {
         const double t = t0 + roots[i];
         if (!(t > tmin && t < tmax)) continue;
@@ -147,7 +198,7 @@ double RevolvedQuadric::FindParameters(const V3d& p, double* u, double* v) const
         ProfileCandidate candidates[2];
         const int m = ProfileCandidates(p, slack, candidates);
         for (int j = 0; j < m; ++j) {
-            if (ThetaParameter(p, candidates[j].angle, slack, u)) {
+            if (ThetaParameter(p, candidates[j].along, slack, u)) {
                 *v = candidates[j].v;
                 return slack;
             }

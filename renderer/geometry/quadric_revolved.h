@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "geometry/quadric_angles.h"
 #include "geometry/quadric_roots.h"
 #include "geometry/shape.h"
 
@@ -16,12 +17,6 @@ namespace gonio::quadric {
 
 using Imath::V2d;
 using Imath::V3d;
-
-constexpr double kPi = 3.14159265358979323846;
-
-inline double Radians(double degrees) { return degrees * (kPi / 180); }
-// +1 for zero, so that a degenerate factor never zeroes a normal.
-inline double SignOf(double x) { return x < 0 ? -1.0 : 1.0; }
 
 // The profile at one v, in the θ = 0 frame.
 struct ProfilePoint {
@@ -34,10 +29,12 @@ struct ProfilePoint {
     V3d normal;
 };
 
-// A profile point that can sweep onto a given surface point: its v, and its own polar angle
-// atan2(L.y, L.x) (0 or π for profiles in the xz plane), from which the sweep angle follows.
+// A profile point that can sweep onto a given surface point: its v, and the direction of its own
+// xy part (±x for profiles in the xz plane; any positive multiple), from which the sweep angle
+// follows.
 struct ProfileCandidate {
-    double v = 0, angle = 0;
+    double v = 0;
+    V2d along{1, 0};
 };
 
 // Whether x lies in [0, 1] give or take `slack`; if so, clamps it into [0, 1]. A point rounded
@@ -105,8 +102,9 @@ class RevolvedQuadric : public Quadric {
     // Evaluate(ParametersAt(point)) for a point IntersectPoint reported, up to float rounding,
     // without the cosine and sine of θ: for a point on the sweep they are the direction of its
     // xy part from that of the profile point's. Points that needed ParametersAt's slack, and
-    // points next to the axis where that direction is lost, go through Evaluate.
-    SurfaceGeometry EvaluateAt(const V3f& point) const final;
+    // points next to the axis where that direction is lost, go through Evaluate. A shape may
+    // take a shorter way for its common case (the whole sphere).
+    SurfaceGeometry EvaluateAt(const V3f& point) const override;
 
   protected:
     explicit RevolvedQuadric(double thetamaxDegrees);
@@ -122,6 +120,9 @@ class RevolvedQuadric : public Quadric {
     // whose sweep passes through the surface point p (at most 2: a profile may meet one circle
     // twice).
     virtual int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const = 0;
+    // The `along` of ProfileCandidates(p, 0, ...): shapes whose v costs trigonometry decide
+    // whether it lies in [0, 1] without it.
+    virtual int ProfileDirections(const V3d& p, V2d along[2]) const;
     // The gradient of the implicit equation that RayRoots solves, at a point of the surface
     // (zero where it has none, as at a cone's apex).
     virtual V3d ImplicitGradient(const V3d& p) const = 0;
@@ -137,6 +138,24 @@ class RevolvedQuadric : public Quadric {
     // full sphere, a full torus tube): with a full sweep, a root is a hit without computing
     // its (u, v).
     void SetProfileComplete() { everyRootOnShape_ = fullSweep_; }
+    // The implicit surface that RayRoots solves is the sphere of this radius about the origin,
+    // which is then also the bounding ball: IntersectPoint finds its roots from the ball test's
+    // cross product (the robust form of Haines et al., Ray Tracing Gems ch. 7), without
+    // calling RayRoots or testing the cylinder about the axis.
+    void SetSphericalSurface(double radius);
+    // The roots of the spherical surface (SetSphericalSurface) along o + t·d for t in (lo, hi),
+    // ascending, o being the ray's point nearest the centre: `missed2` = |w × d|² for any w
+    // from the centre to the ray, dd = |d|².
+    int SphereRoots(double missed2, double dd, double lo, double hi, double t[2]) const;
+
+    // Whether every root of RayRoots is a hit (SetProfileComplete with a full sweep).
+    bool EveryRootOnShape() const { return everyRootOnShape_; }
+    // The surface point of `profile` swept by the angle whose cosine and sine are c and s.
+    SurfaceGeometry Sweep(const ProfilePoint& profile, double c, double s, float u, float v) const;
+    // u for the surface point p swept from a profile point whose xy part points along `along`,
+    // if it lies within the sweep (give or take `slack` radians, then moved onto the nearer
+    // edge).
+    bool ThetaParameter(const V3d& p, const V2d& along, double slack, double* u) const;
 
     double thetaMax_;  // radians, signed
     bool degenerate_ = false;
@@ -146,14 +165,12 @@ class RevolvedQuadric : public Quadric {
     // The (u, v) of the surface point p (see ParametersAt), in *u, *v; returns the slack that
     // it took (0: p lies on the shape as IntersectPoint decided), or −1 where none did.
     double FindParameters(const V3d& p, double* u, double* v) const;
-    // The surface point of `profile` swept by the angle whose cosine and sine are c and s.
-    SurfaceGeometry Sweep(const ProfilePoint& profile, double c, double s, float u, float v) const;
-    // u for the surface point p swept from a profile point at polar angle profileAngle, if it
-    // lies within the sweep (give or take `slack` radians, then moved onto the nearer edge).
-    bool ThetaParameter(const V3d& p, double profileAngle, double slack, double* u) const;
 
     bool fullSweep_;
+    AngleRange sweep_;  // the directions of the sweep, from the profile's own
     bool everyRootOnShape_ = false;
+    bool spherical_ = false;
+    double sphereRadius2_ = 0;
     V3d center_{0, 0, 0};
     Box3f bounds_;
     V3d ballCentre_{0, 0, 0};

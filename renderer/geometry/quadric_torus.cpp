@@ -49,7 +49,10 @@ class Torus final : public RevolvedQuadric {
           phiMax_(Radians(phimax)),
           fullTube_(std::fabs(phimax - phimin) >= 360) {
         if (minorRadius == 0 || phimin == phimax) SetDegenerate();
-        if (fullTube_) SetProfileComplete();
+        if (fullTube_)
+            SetProfileComplete();
+        else
+            tubeRange_ = AngleRange(phiMin_, phiMax_ - phiMin_);
         V2d cosRange, sinRange;
         CosSinRange(std::min(phiMin_, phiMax_), std::max(phiMin_, phiMax_), &cosRange, &sinRange);
         // For a fixed θ a point's coordinates are linear in the profile's x, so the profile's
@@ -57,7 +60,10 @@ class Torus final : public RevolvedQuadric {
         const double x0 = major_ + minor_ * cosRange.x, x1 = major_ + minor_ * cosRange.y;
         const double z0 = minor_ * sinRange.x, z1 = minor_ * sinRange.y;
         SetExtent({V2d(x0, 0), V2d(x1, 0)}, std::min(z0, z1), std::max(z0, z1));
-        SetBoundingBall(V3d(0, 0, 0), std::fabs(major_) + std::fabs(minor_));
+        if (major_ == 0)
+            SetSphericalSurface(minor_);  // a sphere swept twice
+        else
+            SetBoundingBall(V3d(0, 0, 0), std::fabs(major_) + std::fabs(minor_));
     }
 
   protected:
@@ -76,11 +82,9 @@ class Torus final : public RevolvedQuadric {
                 SignOf(dphi * minor_ * side) * V3d(c, 0, s)};
     }
 
+    // Not for major_ = 0, a sphere swept twice (SetSphericalSurface), where the quartic would be
+    // a square with only double roots.
     int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const override {
-        if (major_ == 0) {
-            // A sphere swept twice: the quartic would be a square with only double roots.
-            return RevolutionQuadric{1, -1, 0, minor_ * minor_, 0}.RayRoots(o, d, lo, hi, t);
-        }
         // Work in distances τ along the unit direction e from the ray's point nearest the
         // torus centre p: the quartic's coefficients are then of the torus's own size.
         const double speed = d.length();
@@ -108,21 +112,24 @@ class Torus final : public RevolvedQuadric {
     }
 
     int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
-        // The point lies on the tube circle centred at signed distance +R from the axis in its
-        // own half plane (θ = ψ), or, for a spindle torus, at −R (θ = ψ + π). Try the nearer.
-        const double rho = std::sqrt(p.x * p.x + p.y * p.y);
-        const double offAxis[2] = {rho, -rho};
-        double miss[2];
-        for (int i = 0; i < 2; ++i)
-            miss[i] = std::fabs(std::hypot(offAxis[i] - major_, p.z) - std::fabs(minor_));
-        const int first = miss[1] < miss[0] ? 1 : 0;
-        const double tolerance = miss[first] + 1e-7 * (std::fabs(major_) + std::fabs(minor_));
+        double offAxis[2];
+        const int m = TubeCircles(p, offAxis);
         int n = 0;
-        for (int i : {first, 1 - first}) {
-            if (miss[i] > tolerance) continue;
-            const double phi = std::atan2(p.z / minor_, (offAxis[i] - major_) / minor_);
-            if (TubeParameter(phi, slack, &c[n].v)) c[n++].angle = offAxis[i] < 0 ? kPi : 0;
+        for (int i = 0; i < m; ++i) {
+            const double phi = Atan2(p.z / minor_, (offAxis[i] - major_) / minor_);
+            if (TubeParameter(phi, slack, &c[n].v)) c[n++].along = Side(offAxis[i]);
         }
+        return n;
+    }
+
+    int ProfileDirections(const V3d& p, V2d along[2]) const override {
+        // φ in the tube's range without φ itself: its direction against the range's ends.
+        double offAxis[2];
+        const int m = TubeCircles(p, offAxis);
+        int n = 0;
+        for (int i = 0; i < m; ++i)
+            if (tubeRange_.Contains((offAxis[i] - major_) / minor_, p.z / minor_))
+                along[n++] = Side(offAxis[i]);
         return n;
     }
 
@@ -136,6 +143,24 @@ class Torus final : public RevolvedQuadric {
     }
 
   private:
+    // The signed distances from the axis, in p's half plane, of the centres of the tube circles
+    // that p may lie on, nearer first: +R (θ = ψ), or, for a spindle torus, also −R (θ = ψ + π).
+    int TubeCircles(const V3d& p, double offAxis[2]) const {
+        const double rho = std::sqrt(p.x * p.x + p.y * p.y);
+        const double sides[2] = {rho, -rho};
+        double miss[2];
+        for (int i = 0; i < 2; ++i)
+            miss[i] = std::fabs(std::hypot(sides[i] - major_, p.z) - std::fabs(minor_));
+        const int first = miss[1] < miss[0] ? 1 : 0;
+        const double tolerance = miss[first] + 1e-7 * (std::fabs(major_) + std::fabs(minor_));
+        int n = 0;
+        for (int i : {first, 1 - first})
+            if (!(miss[i] > tolerance)) offAxis[n++] = sides[i];
+        return n;
+    }
+
+    static V2d Side(double offAxis) { return V2d(offAxis < 0 ? -1 : 1, 0); }
+
     // v for the tube angle phi (any turn), if phi lies in the swept φ range (give or take
     // `slack` radians, then moved onto the nearer end).
     bool TubeParameter(double phi, double slack, double* v) const {
@@ -155,6 +180,7 @@ class Torus final : public RevolvedQuadric {
 
     double major_, minor_, phiMin_, phiMax_;
     bool fullTube_;
+    AngleRange tubeRange_;  // the directions of (cos φ, sin φ) on the tube
 };
 
 }  // namespace

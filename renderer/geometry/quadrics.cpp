@@ -29,8 +29,10 @@ class Sphere final : public RevolvedQuadric {
         }
         if (radius == 0 || phiMin_ == phiMax_) SetDegenerate();
         // atan2 below never leaves [−90°, 90°]: a full φ range takes every point of the sphere.
-        if (std::fabs(phiMax_ - phiMin_) == kPi) SetProfileComplete();
-        implicit_ = {1, -1, 0, radius * radius, 0};  // x² + y² + z² = r²
+        if (std::fabs(phiMax_ - phiMin_) == kPi)
+            SetProfileComplete();
+        else
+            phiRange_ = AngleRange(phiMin_, phiMax_ - phiMin_);
 
         const double lo = std::min(phiMin_, phiMax_), hi = std::max(phiMin_, phiMax_);
         const double cosMin = std::min(std::cos(lo), std::cos(hi));
@@ -38,7 +40,28 @@ class Sphere final : public RevolvedQuadric {
         const double z0 = radius * std::sin(lo), z1 = radius * std::sin(hi);
         SetExtent({V2d(radius * cosMin, 0), V2d(radius * cosMax, 0)}, std::min(z0, z1),
                   std::max(z0, z1));
-        SetBoundingBall(V3d(0, 0, 0), radius);
+        SetSphericalSurface(radius);
+    }
+
+    // A whole sphere's hits, the renderer's common case, straight from the point: its one
+    // profile candidate always holds (u, v), and the profile and sweep directions are those of
+    // the point; exactly the (u, v) of ParametersAt, the rest as RevolvedQuadric::EvaluateAt
+    // up to rounding, with fewer square roots and no search.
+    SurfaceGeometry EvaluateAt(const V3f& point) const override {
+        const V3d p(point.x, point.y, point.z);
+        const double rho = std::sqrt(p.x * p.x + p.y * p.y), z = p.z * SignOf(radius_);
+        const double distance = std::sqrt(rho * rho + z * z);
+        // Partial spheres, and points near the poles (see ProfileThrough), the general way.
+        if (!EveryRootOnShape() || !(rho > 0.05 * distance))
+            return RevolvedQuadric::EvaluateAt(point);
+        double u;
+        ThetaParameter(p, ProfileSide(), 0, &u);  // always on a full sweep
+        const double v = ParameterV(p, rho);      // in [0, 1] for a full φ range
+        // P = Rz(θ)·L: the sweep's cos θ and sin θ are the direction of p's xy part from the
+        // profile point's (ProfileSide).
+        const double side = SignOf(radius_) / rho;
+        return Sweep(ProfileAtAngle(rho / distance, z / distance), side * p.x, side * p.y, float(u),
+                     float(v));
     }
 
   protected:
@@ -58,20 +81,37 @@ class Sphere final : public RevolvedQuadric {
         return ProfileAtAngle(rho / distance, z / distance);
     }
 
+    // IntersectPoint solves the sphere itself (SetSphericalSurface); this is the same.
     int RayRoots(const V3d& o, const V3d& d, double lo, double hi, double t[4]) const override {
-        return implicit_.RayRoots(o, d, lo, hi, t);
+        return SphereRoots(o.cross(d).length2(), d.dot(d), lo, hi, t);
     }
 
     int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
-        // sin φ = z/r and cos φ = ρ/|r| ≥ 0; atan2 stays accurate near the poles.
-        const double phi = std::atan2(p.z * SignOf(radius_), std::sqrt(p.x * p.x + p.y * p.y));
-        c[0] = {(phi - phiMin_) / (phiMax_ - phiMin_), radius_ < 0 ? kPi : 0};
+        c[0] = {ParameterV(p, std::sqrt(p.x * p.x + p.y * p.y)), ProfileSide()};
         return ClampToUnit(&c[0].v, slack) ? 1 : 0;
     }
 
-    V3d ImplicitGradient(const V3d& p) const override { return implicit_.Gradient(p); }
+    int ProfileDirections(const V3d& p, V2d along[2]) const override {
+        // φ in [φmin, φmax] without φ itself: (cos φ, sin φ) = (ρ/|r|, z/r) points along
+        // (ρ, z·sign r).
+        if (!phiRange_.Contains(std::sqrt(p.x * p.x + p.y * p.y), p.z * SignOf(radius_))) return 0;
+        along[0] = ProfileSide();
+        return 1;
+    }
+
+    V3d ImplicitGradient(const V3d& p) const override { return 2.0 * p; }
 
   private:
+    // L.x = r·cos φ has the sign of r.
+    V2d ProfileSide() const { return V2d(radius_ < 0 ? -1 : 1, 0); }
+
+    // v of the surface point p at the distance rho from the axis (before ClampToUnit): sin φ =
+    // z/r and cos φ = ρ/|r| ≥ 0; atan2 stays accurate near the poles.
+    double ParameterV(const V3d& p, double rho) const {
+        const double phi = Atan2(p.z * SignOf(radius_), rho);
+        return (phi - phiMin_) / (phiMax_ - phiMin_);
+    }
+
     ProfilePoint ProfileAtAngle(double c, double s) const {
         // cross((-L.y, L.x, 0), dLdv) = r²·(φmax − φmin)·cos φ·(cos φ, 0, sin φ), cos φ ≥ 0.
         return {radius_ * V3d(c, 0, s), radius_ * (phiMax_ - phiMin_) * V3d(-s, 0, c),
@@ -79,7 +119,7 @@ class Sphere final : public RevolvedQuadric {
     }
 
     double radius_, phiMin_ = 0, phiMax_ = 0;
-    RevolutionQuadric implicit_;
+    AngleRange phiRange_;  // (cos φ, sin φ) of the profile's points
 };
 
 // The surface swept by the segment point1 → point2: RISpec's hyperboloid, of which the
@@ -134,7 +174,7 @@ class SweptLine final : public RevolvedQuadric {
         if (direction_.z != 0) {
             double v = (p.z - start_.z) / direction_.z;
             if (!ClampToUnit(&v, slack)) return 0;
-            c[0] = {v, AngleAt(v)};
+            c[0] = {v, AlongAt(v)};
             return 1;
         }
         // In the plane: the v where |a + v·b| equals the point's distance from the axis.
@@ -145,7 +185,7 @@ class SweptLine final : public RevolvedQuadric {
         const int n = SolveQuadratic(bb, 2 * ab, aa - (p.x * p.x + p.y * p.y), roots);
         int kept = 0;
         for (int i = 0; i < n; ++i)
-            if (ClampToUnit(&roots[i], slack)) c[kept++] = {roots[i], AngleAt(roots[i])};
+            if (ClampToUnit(&roots[i], slack)) c[kept++] = {roots[i], AlongAt(roots[i])};
         return kept;
     }
 
@@ -155,10 +195,13 @@ class SweptLine final : public RevolvedQuadric {
     }
 
   private:
-    double AngleAt(double v) const {
+    // The direction of the profile point's xy part, scaled by its larger coordinate so that the
+    // products of InProfileFrame neither overflow nor underflow; +x on the axis.
+    V2d AlongAt(double v) const {
         const V3d L = start_ + v * direction_;
-        if (inXZPlane_) return L.x < 0 ? kPi : 0;
-        return std::atan2(L.y, L.x);
+        if (inXZPlane_) return V2d(L.x < 0 ? -1 : 1, 0);
+        const double scale = std::max(std::fabs(L.x), std::fabs(L.y));
+        return scale > 0 ? V2d(L.x / scale, L.y / scale) : V2d(1, 0);
     }
 
     V3d start_, direction_;
@@ -196,7 +239,7 @@ class Paraboloid final : public RevolvedQuadric {
     }
 
     int ProfileCandidates(const V3d& p, double slack, ProfileCandidate c[2]) const override {
-        c[0] = {(p.z - zmin_) / (zmax_ - zmin_), rmax_ < 0 ? kPi : 0};
+        c[0] = {(p.z - zmin_) / (zmax_ - zmin_), V2d(rmax_ < 0 ? -1 : 1, 0)};
         return ClampToUnit(&c[0].v, slack) ? 1 : 0;
     }
 

@@ -33,9 +33,10 @@ V3f TransformVector(const M44f& m, const V3f& v) {
 
 // Normals transform with the inverse transpose; with row vectors that is n·(M⁻¹)ᵀ.
 V3f TransformNormal(const M44f& objectFromSpace, const V3f& n) {
-    V3f out;
-    objectFromSpace.transposed().multDirMatrix(n, out);
-    return out;
+    const M44f& m = objectFromSpace;  // n·Mᵀ without copying the transpose
+    return V3f(n.x * m[0][0] + n.y * m[0][1] + n.z * m[0][2],
+               n.x * m[1][0] + n.y * m[1][1] + n.z * m[1][2],
+               n.x * m[2][0] + n.y * m[2][1] + n.z * m[2][2]);
 }
 
 V3f Normalized(const V3f& v) {
@@ -148,6 +149,7 @@ struct GeometryRecord {
     std::vector<int> attributeSlot;
     // Indices into *vars of the standard variables, -1 when absent.
     int cs = -1, os = -1, st = -1, s = -1, t = -1;
+    int quadricN = -1;  // a quadric's N (the one EvaluateQuadricAt interpolates)
     // A triangle mesh whose normal is Embree's Ng, or a quadric whose normal is that of its
     // implicit equation, and whose colour is its attributes' (no N, no Cs primitive
     // variable): EvaluateLean needs nothing else.
@@ -219,8 +221,9 @@ struct RayScene::Impl {
     RTCGeometry MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage, const M44f& m);
     RTCGeometry MakeCurves(const CurveSet& curves, const M44f& m);
     RTCGeometry MakePoints(const PointSet& points, const M44f& m);
-    ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit,
-                             const V3f& spaceP) const;
+    // worldP: the hit point, which spaceFromWorld takes to the record's space.
+    ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit, const V3f& worldP,
+                             const M44f& spaceFromWorld) const;
     // The record of a hit's geometry, its attributes (an instance's for the shape, or the
     // shape's own) and the instance that placed it (null at the top level).
     struct ResolvedHit {
@@ -461,8 +464,11 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
     }
     if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry))
         record->flatMesh = mesh->normals.empty() && mesh->cornerNormals.empty() && record->cs < 0;
-    if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry))
-        record->plainQuadric = !quadric->vars.Find("N") && record->cs < 0;
+    if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry)) {
+        if (const PrimVar* n = quadric->vars.Find("N"))
+            record->quadricN = static_cast<int>(n - vars.data());
+        record->plainQuadric = record->quadricN < 0 && record->cs < 0;
+    }
     Attach(level, g, std::move(record));
 }
 
@@ -575,13 +581,17 @@ bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar,
 }
 
 ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
-                                         const V3f& spaceP) const {
+                                         const V3f& worldP, const M44f& spaceFromWorld) const {
     const ShapeGeometry& geometry = record.shape->geometry;
     if (const auto* mesh = std::get_if<TriangleMesh>(&geometry))
         return EvaluateMesh(*mesh, hit.primID, hit.u, hit.v);
-    if (const auto* quadric = std::get_if<QuadricShape>(&geometry))
-        return EvaluateQuadricAt(*quadric, hit.Ng);  // Ng holds the object-space P
-    const V3f objectP = TransformPoint(record.objectFromSpace, spaceP);
+    if (const auto* quadric = std::get_if<QuadricShape>(&geometry)) {
+        const PrimVar* normals =
+            record.quadricN >= 0 ? &record.vars->vars[record.quadricN] : nullptr;
+        return EvaluateQuadricAt(*quadric, hit.Ng, normals);  // Ng holds the object-space P
+    }
+    const V3f objectP =
+        TransformPoint(record.objectFromSpace, TransformPoint(spaceFromWorld, worldP));
     const V3f objectNg = TransformNormal(record.spaceFromObject, hit.Ng);
     if (const auto* curves = std::get_if<CurveSet>(&geometry))
         return EvaluateCurve(*curves, hit.primID, hit.u, hit.v, objectP, objectNg);
@@ -705,10 +715,18 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     M44f worldFromSpace, spaceFromWorld;
     Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
     const V3f worldP = org + hit.t * dir;
-    const ObjectHit object = s.EvaluateObject(*record, hit, TransformPoint(spaceFromWorld, worldP));
+    const ObjectHit object = s.EvaluateObject(*record, hit, worldP, spaceFromWorld);
 
-    const M44f worldFromObject = record->spaceFromObject * worldFromSpace;
-    const M44f objectFromWorld = spaceFromWorld * record->objectFromSpace;
+    // At the top level the record's space is the world (SpaceTransforms gives identities).
+    M44f placedWorldFromObject, placedObjectFromWorld;
+    if (resolved.placement) {
+        placedWorldFromObject = record->spaceFromObject * worldFromSpace;
+        placedObjectFromWorld = spaceFromWorld * record->objectFromSpace;
+    }
+    const M44f& worldFromObject =
+        resolved.placement ? placedWorldFromObject : record->spaceFromObject;
+    const M44f& objectFromWorld =
+        resolved.placement ? placedObjectFromWorld : record->objectFromSpace;
     SurfacePoint& sp = *out;
     sp.shape = record->shape;
     sp.P = worldP;
@@ -716,7 +734,10 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     sp.dPdv = TransformVector(worldFromObject, object.geometry.dPdv);
     const float flip = record->shape->flipNormals ? -1.f : 1.f;
     sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
-    sp.N = flip * Normalized(TransformNormal(objectFromWorld, object.N));
+    // N is Ng unless the primitive gives normals.
+    sp.N = object.N == object.geometry.Ng
+               ? sp.Ng
+               : flip * Normalized(TransformNormal(objectFromWorld, object.N));
     sp.u = object.geometry.u, sp.v = object.geometry.v;
 
     sp.worldFromObject = worldFromObject;

@@ -115,7 +115,8 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
     return hit;
 }
 
-ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP) {
+ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP,
+                            const PrimVar* normals) {
     ObjectHit hit;
     hit.geometry = shape.quadric->EvaluateAt(objectP);
     hit.N = hit.geometry.Ng;
@@ -123,9 +124,9 @@ ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP
     // of the four (u, v) corners.
     hit.stencils.varying = hit.stencils.vertex = hit.stencils.faceVarying =
         Bilinear4(hit.geometry.u, hit.geometry.v);
-    if (const PrimVar* n = shape.vars.Find("N")) {
+    if (normals) {
         float value[3];
-        InterpolatePrimVar(*n, hit.stencils, value);
+        InterpolatePrimVar(*normals, hit.stencils, value);
         hit.N = SafeNormalize(V3f(value[0], value[1], value[2]), hit.N);
     }
     return hit;

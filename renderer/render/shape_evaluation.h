@@ -33,8 +33,10 @@ struct ObjectHit {
 
 // `primID`, (b1, b2): Embree's triangle and barycentrics.
 ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
-// At a point the quadric's IntersectPoint reported (Quadric::EvaluateAt).
-ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP);
+// At a point the quadric's IntersectPoint reported (Quadric::EvaluateAt). `normals`: the
+// shape's N primitive variable, or null where it has none (found once per shape, not per hit).
+ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP,
+                            const PrimVar* normals);
 // `objectP`: the hit point; curves and points have no (u,v) surface of their own to evaluate.
 ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float v,
                         const Imath::V3f& objectP, const Imath::V3f& objectNg);

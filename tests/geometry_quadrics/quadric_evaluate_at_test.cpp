@@ -84,6 +84,11 @@ std::vector<QuadricCase> Cases() {
         V3d(-1, -0.5, 1), 300, 1));
     cases.push_back(ParaboloidCase("ParaboloidNegativeRmax", -1, 0, 2, -270));
     cases.push_back(SphereCase("SphereHemisphereNegativeTheta", 1, 0, 1, -360, -1));
+    // Whole spheres (the renderer's lean path) in every orientation; Ng's sense is not at
+    // issue here.
+    cases.push_back(SphereCase("SphereWholeNegativeRadius", -1, -1, 1, 360, 0));
+    cases.push_back(SphereCase("SphereWholeReversedNegativeTheta", 2, 2, -2, -360, 0));
+    cases.push_back(SphereCase("SphereWholeTwice", 0.5, -0.5, 0.5, 720, 0));
     cases.push_back(TorusCase("TorusSpindle", 0.3, 1, -180, 180, 300));
     return cases;
 }
