@@ -50,6 +50,7 @@ Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
       tileSize_(std::max(1, tileSize)),
       xmargin_(FilterMargin(filter.XRadius())),
       ymargin_(FilterMargin(filter.YRadius())),
+      keepNearest_(WeightsCanCancel(filter)),
       range_(Imath::V2i(spec.xmin - xmargin_, spec.ymin - ymargin_),
              Imath::V2i(spec.xmax + xmargin_, spec.ymax + ymargin_)),
       tilesX_((range_.max.x - range_.min.x + tileSize_) / tileSize_),
@@ -73,6 +74,15 @@ Imath::Box2i Film::Footprint(const Imath::Box2i& pixels) const {
                                    std::min(pixels.max.y + ymargin_, spec_.ymax)));
 }
 
+bool Film::WeightsCanCancel(const PixelFilter& filter) {
+    if (!filter.NeverNegative()) return true;
+    // A pixel's own samples lie at offsets in [-0.5, 0.5) on both axes. When all of them lie
+    // strictly inside the footprint, each weighs more than 0, and so does their sum.
+    const float x = 0.5f / filter.XRadius(), y = 0.5f / filter.YRadius();
+    const bool ownSamplesInside = filter.Separable() ? x < 1 && y < 1 : x * x + y * y < 1;
+    return !ownSamplesInside;
+}
+
 FilmTile Film::StartTile(int tile) const { return FilmTile(*this, tile); }
 
 void Film::StoreTile(FilmTile&& tile) {
@@ -93,9 +103,11 @@ FilmTile::FilmTile(const Film& film, int index)
                                     size_t(footprint_.max.y - footprint_.min.y + 1);
     sums_.assign(pixels * channels_, 0.0);
     weights_.assign(pixels * 2, 0.0);
-    nearest_.assign(pixels * (1 + channels_), 0.0f);
-    for (size_t i = 0; i < pixels; ++i)
-        nearest_[i * (1 + channels_)] = std::numeric_limits<float>::infinity();
+    if (film.keepNearest_) {
+        nearest_.assign(pixels * (1 + channels_), 0.0f);
+        for (size_t i = 0; i < pixels; ++i)
+            nearest_[i * (1 + channels_)] = std::numeric_limits<float>::infinity();
+    }
     depth_.assign(pixels, std::numeric_limits<float>::infinity());
 }
 
@@ -138,10 +150,12 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
 
 void FilmTile::AddToPixel(int qx, int qy, float distance, float w, const float* values) {
     const size_t pixel = PixelIndex(qx, qy);
-    float* nearest = &nearest_[pixel * (1 + channels_)];
-    if (distance < nearest[0]) {
-        nearest[0] = distance;
-        std::copy(values, values + channels_, nearest + 1);
+    if (!nearest_.empty()) {
+        float* nearest = &nearest_[pixel * (1 + channels_)];
+        if (distance < nearest[0]) {
+            nearest[0] = distance;
+            std::copy(values, values + channels_, nearest + 1);
+        }
     }
     if (w == 0.0f) return;
     weights_[2 * pixel] += w;
@@ -168,8 +182,9 @@ void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) co
             const FilmTile& tile = tiles_[size_t(ty) * tilesX_ + tx];
             if (!tile.film_ || !tile.footprint_.intersects(Imath::V2i(px, py))) continue;
             const size_t pixel = tile.PixelIndex(px, py);
-            const float* tileNearest = &tile.nearest_[pixel * (1 + channels)];
-            if (tileNearest[0] < nearestDistance) {
+            const float* tileNearest =
+                keepNearest_ ? &tile.nearest_[pixel * (1 + channels)] : nullptr;
+            if (tileNearest && tileNearest[0] < nearestDistance) {
                 nearestDistance = tileNearest[0];
                 nearest = tileNearest + 1;
             }

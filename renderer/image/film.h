@@ -101,6 +101,11 @@ class Film {
     // pixel takes the value of its nearest sample; a pixel no sample reaches is 0.
     Image Resolve() const;
 
+    // Whether some pixel's weights can sum to (nearly) 0, so that the film must keep each
+    // pixel's nearest sample as Resolve's fallback: filters with negative lobes, and footprints
+    // too small to hold all of a pixel's own samples.
+    static bool WeightsCanCancel(const PixelFilter& filter);
+
   private:
     friend class FilmTile;
     // The window pixels that samples of `pixels` can reach.
@@ -111,6 +116,7 @@ class Film {
     PixelFilter filter_;
     int tileSize_;
     int xmargin_, ymargin_;
+    bool keepNearest_;
     Imath::Box2i range_;
     int tilesX_, tilesY_;
     std::vector<FilmTile> tiles_;
@@ -144,9 +150,11 @@ class FilmTile {
     int channels_ = 0;
     std::vector<double> sums_;     // channels_ per footprint pixel
     std::vector<double> weights_;  // sum of weights, sum of |weights|: 2 per pixel
-    std::vector<float> nearest_;   // distance², then the channels: 1 + channels_ per pixel
-    std::vector<float> depth_;     // per footprint pixel
-    // Scratch for AddSample: a sample's offsets from, and weights for, a row of pixels.
+    // Distance², then the channels: 1 + channels_ per pixel; empty unless the film keeps them.
+    std::vector<float> nearest_;
+    std::vector<float> depth_;  // per footprint pixel
+    // Scratch for AddSample: a sample's offsets from, and weights for, the columns of pixels
+    // px - xmargin .. px + xmargin.
     std::vector<float> xOffsets_, xWeights_;
 };
 

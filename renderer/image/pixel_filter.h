@@ -31,6 +31,12 @@ class PixelFilter {
     float XWeight(float dx) const { return Weight1D(dx, xwidth_); }
     float YWeight(float dy) const { return Weight1D(dy, ywidth_); }
 
+    // Box, triangle, gaussian and disk weigh no sample negatively (catmull-rom, sinc and
+    // mitchell have negative lobes).
+    bool NeverNegative() const {
+        return kind_ == Kind::Box || kind_ == Kind::Triangle || kind_ == Kind::Gaussian ||
+               kind_ == Kind::Disk;
+    }
     float XRadius() const { return xwidth_ * 0.5f; }
     float YRadius() const { return ywidth_ * 0.5f; }
     const std::string& Name() const;

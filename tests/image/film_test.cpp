@@ -157,6 +157,23 @@ TEST(Film, CancelledWeightsFallBackToTheNearestSample) {
     EXPECT_FLOAT_EQ(image.At(7, 0)[0], 0.0f);
 }
 
+TEST(Film, KeepsNearestSamplesOnlyWhereWeightsCanCancel) {
+    auto canCancel = [](const char* name, float width) {
+        std::string error;
+        return Film::WeightsCanCancel(*PixelFilter::FromRib(name, width, width, error));
+    };
+    EXPECT_FALSE(canCancel("gaussian", 2));
+    EXPECT_FALSE(canCancel("box", 1.5f));
+    EXPECT_FALSE(canCancel("triangle", 1.5f));
+    EXPECT_FALSE(canCancel("disk", 1.5f));  // a pixel's corners lie 0.71 from its centre
+    EXPECT_TRUE(canCancel("catmull-rom", 4));
+    EXPECT_TRUE(canCancel("sinc", 4));
+    EXPECT_TRUE(canCancel("mitchell", 4));
+    EXPECT_TRUE(canCancel("triangle", 1));  // a sample on the pixel's left edge weighs 0
+    EXPECT_TRUE(canCancel("disk", 1.2f));
+    EXPECT_TRUE(canCancel("gaussian", 0.5f));
+}
+
 TEST(Film, DepthIsTheNearestOfThePixelsOwnSamples) {
     const float inf = std::numeric_limits<float>::infinity();
     FilmSpec spec = SmallSpec(3, 1, 2, 2, 5);
