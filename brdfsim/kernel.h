@@ -30,10 +30,16 @@ inline double SplatKernel(double x) {
     return 1.0 + x2 * (-22.0 / 9.0 + x2 * (17.0 / 9.0 - x2 * (4.0 / 9.0)));
 }
 
-// Same polynomial on the squared argument, so the L2 norm needs no square root.
+// Thesis eq. 4.4's polynomial in x², valid for x² < 1 only (it rises again past 1). Estrin's
+// scheme, for a short chain of dependent operations in vectorised loops.
+inline float SplatKernelPolynomial(float x2) {
+    return (1.0f - (22.0f / 9.0f) * x2) + (x2 * x2) * (17.0f / 9.0f - (4.0f / 9.0f) * x2);
+}
+
+// Same kernel on the squared argument, so the L2 norm needs no square root.
 inline float SplatKernelSquared(float x2) {
     if (x2 >= 1.0f) return 0.0f;
-    return 1.0f + x2 * (-22.0f / 9.0f + x2 * (17.0f / 9.0f - x2 * (4.0f / 9.0f)));
+    return SplatKernelPolynomial(x2);
 }
 
 // Thesis eqs. 3.4-3.6: the distance in the product domain from the two partial distances.

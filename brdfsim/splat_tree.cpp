@@ -4,41 +4,47 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <memory>
 #include <numeric>
 
 namespace gonio {
 namespace {
 
 constexpr int kLeaf = SplatTree::kLeafSize;
-// Float partial sums per leaf: kLeaf / kLanes terms each (positive, so within that many float
-// roundings of the sum), then double.
-constexpr int kLanes = 8;
-// Unused leaf slots: no query comes within any radius of them.
+constexpr int kWidth = SplatTree::kWidth;
+// Unused slots and boxes: no query comes within any radius of them.
 constexpr float kFarAway = 1e4f;
 // Skipping a subtree needs its lower bound clearly past R: float rounding in the bound must never
 // skip a splat the exact per-splat test would keep (keeping one too many costs nothing).
 constexpr double kReachSlack = 1e-4;
+// Reachable leaves are gathered in batches, so that the box tests and the leaf loop run apart.
+constexpr int kBatch = 64;
+// Pending nodes: at most kWidth - 1 per level below the root, and no tree has 32 levels.
+constexpr int kStackSize = 32 * kWidth;
 
 // Everything the traversal calls is forced inline: a call from the AVX2 copy into a function
 // compiled for the baseline would cost more than the function.
 #define GONIO_INLINE inline __attribute__((always_inline))
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-// One copy of the traversal per instruction set, chosen once at load time (GCC ifunc). AVX2 has
-// no FMA, so both copies compute the same float terms.
-#define GONIO_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
+// One copy of the traversal per instruction set, chosen once at load time (GCC ifunc).
+#define GONIO_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define GONIO_SIMD_CLONES
 #endif
 
+constexpr int NumCoordinates(bool isotropic) { return isotropic ? 4 : 6; }
+
 // What the traversal reads, in plain pointers.
 struct TreeView {
     const SplatTree::Node* nodes;
-    std::uint32_t numNodes;
-    const float *inX, *inY, *inZ, *outX, *outY, *outZ, *weights;
+    const float* leaves;
+    std::size_t leafStride;   // floats per leaf
+    std::uint32_t emptyLeaf;  // far from everything, weighing nothing
     int ncomps;
-    float chordRadius2, invRadius;
+    float chordRadius2, invRadius2;
     float reach, chordReach2;  // R and the squared chord of R, with slack, for skipping
 };
 
@@ -47,195 +53,295 @@ struct QueryImage {
     float in[3], out[3];
 };
 
-// condition ? a : b as a bit mask. GCC 12 will not if-convert the float select of the wide asin
-// (nor the L∞ one), and then leaves the whole leaf loop scalar.
-GONIO_INLINE float Select(bool condition, float a, float b) {
-    std::uint32_t bitsA, bitsB;
-    std::memcpy(&bitsA, &a, sizeof a);
-    std::memcpy(&bitsB, &b, sizeof b);
-    const std::uint32_t mask = condition ? ~0u : 0u;
-    const std::uint32_t bits = (bitsA & mask) | (bitsB & ~mask);
-    float result;
-    std::memcpy(&result, &bits, sizeof result);
-    return result;
+// Eight floats, ints or doubles, GCC's generic vectors: one AVX register, two SSE ones in the
+// baseline.
+typedef float Floats8 __attribute__((vector_size(32)));
+typedef std::int32_t Ints8 __attribute__((vector_size(32)));
+typedef double Doubles8 __attribute__((vector_size(64)));
+
+// The helpers take and give vectors by reference only: by value, the baseline copy of a function
+// would pass them differently from the AVX copies (GCC's -Wpsabi).
+
+// sum += a[0..8) · b[0..8)
+GONIO_INLINE void AddProducts(Floats8& sum, const float* a, const float* b) {
+    Floats8 x, y;
+    std::memcpy(&x, a, sizeof x);
+    std::memcpy(&y, b, sizeof y);
+    sum += x * y;
 }
 
-// FastAsin (splat_set.h) written without branches, the same float operations in the same order,
-// so both give the same bits. `kWide` false: only x <= 0.5 can occur (R <= π/3).
-template <bool kWide>
-GONIO_INLINE float AsinNoBranch(float x) {
-    auto series = [](float z, float s) {
-        return ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
-                 7.4953002686e-2f) *
-                    z +
-                1.6666752422e-1f) *
-                   z * s +
-               s;
-    };
-    const float narrow = series(x * x, x);
-    if constexpr (!kWide) {
-        return narrow;
-    } else {
-        const float z = 0.5f * (1.0f - x);
-        const float wide = 1.5707963267948966f - 2.0f * series(z, std::sqrt(z));
-        return Select(x > 0.5f, wide, narrow);
-    }
+// sum2 += (distance from x to [lo, hi])², per lane.
+GONIO_INLINE void AddAxisDistance2(Floats8& sum2, const float* lo, const float* hi, float x) {
+    Floats8 below, above;
+    std::memcpy(&below, lo, sizeof below);
+    std::memcpy(&above, hi, sizeof above);
+    below -= x;
+    above = x - above;
+    Floats8 d = below > above ? below : above;
+    d = d > 0.0f ? d : Floats8{};
+    sum2 += d * d;
 }
 
-// GreatCircleFromChord2 (splat_set.h) over R.
-template <bool kWide>
-GONIO_INLINE float ScaledDistance(float chord2, float invRadius) {
-    return 2.0f * AsinNoBranch<kWide>(0.5f * std::sqrt(chord2)) * invRadius;
+// Bit j set where lane j of m (all ones or zero) is set.
+GONIO_INLINE unsigned BitMask(const Ints8& m) {
+    const Ints8 bits = m & Ints8{1, 2, 4, 8, 16, 32, 64, 128};
+    unsigned mask = 0;
+    for (int j = 0; j < 8; ++j) mask |= static_cast<unsigned>(bits[j]);
+    return mask;
 }
 
-template <Norm kNorm>
-GONIO_INLINE float CombinedSquared(float dIn, float dOut) {
-    if constexpr (kNorm == Norm::kL1) {
-        return (dIn + dOut) * (dIn + dOut);
-    } else if constexpr (kNorm == Norm::kL2) {
-        return dIn * dIn + dOut * dOut;
-    } else {
-        const float d = std::max(dIn, dOut);  // the same square as Accumulate's choice
-        return d * d;
-    }
-}
-
-// SplatSet::Accumulate's kernel value for the kLeaf splats of one leaf, 0 where it skips a splat.
-// A straight loop with selects only, which the compiler vectorises.
-template <bool kIso, Norm kNorm, bool kWide>
-GONIO_INLINE void LeafKernel(const TreeView& t, std::size_t base, const QueryImage& q,
-                             float* __restrict kern) {
-    const float* __restrict inX = t.inX + base;
-    const float* __restrict inY = t.inY + base;
-    const float* __restrict inZ = t.inZ + base;
-    const float* __restrict outX = t.outX + base;
-    const float* __restrict outY = t.outY + base;
-    const float* __restrict outZ = t.outZ + base;
-    for (int j = 0; j < kLeaf; ++j) {
-        const float ox = q.out[0] - outX[j], oy = q.out[1] - outY[j], oz = q.out[2] - outZ[j];
-        const float chordOut2 = ox * ox + oy * oy + oz * oz;
-        bool inside = chordOut2 < t.chordRadius2;
-        float dIn;
-        if constexpr (kIso) {
-            dIn = std::abs(q.in[0] - inX[j]) * t.invRadius;
-            inside = inside & (dIn < 1.0f);
-        } else {
-            const float ix = q.in[0] - inX[j], iy = q.in[1] - inY[j], iz = q.in[2] - inZ[j];
-            const float chordIn2 = ix * ix + iy * iy + iz * iz;
-            inside = inside & (chordIn2 < t.chordRadius2);
-            dIn = ScaledDistance<kWide>(chordIn2, t.invRadius);
-        }
-        const float dOut = ScaledDistance<kWide>(chordOut2, t.invRadius);
-        const float k2 = CombinedSquared<kNorm>(dIn, dOut);
-        // thesis eq. 4.4 on the squared argument (SplatKernelSquared)
-        const float value = 1.0f + k2 * (-22.0f / 9.0f + k2 * (17.0f / 9.0f - k2 * (4.0f / 9.0f)));
-        kern[j] = inside & (k2 < 1.0f) & (value > 0.0f) ? value : 0.0f;
-    }
-}
-
-GONIO_INLINE float BoxDistance(float q, float lo, float hi) {
-    return std::max(0.0f, std::max(lo - q, q - hi));
-}
-
-GONIO_INLINE float BoxDistance2(const float* q, const float* lo, const float* hi) {
-    const float x = BoxDistance(q[0], lo[0], hi[0]), y = BoxDistance(q[1], lo[1], hi[1]),
-                z = BoxDistance(q[2], lo[2], hi[2]);
-    return x * x + y * y + z * z;
-}
-
-// True when no splat of the subtree reaches the query. The box distances bound the chords from
-// below, and a great-circle distance is at least its chord, so combining the bounds in the
-// splat's norm bounds the product-domain distance from below.
+// Lower bounds of the chords from the query to the kWidth boxes of a node, squared, combined in
+// the splat's norm and compared with R: bit j of the result is set when child j may be reached.
+// The box distances bound the chords from below, and a great-circle distance is at least its
+// chord.
 template <bool kIso, Norm kNorm>
-GONIO_INLINE bool Unreachable(const TreeView& t, const SplatTree::Node& n, const QueryImage& q) {
-    const float out2 = BoxDistance2(q.out, n.lo + 3, n.hi + 3);
-    if (out2 > t.chordReach2) return true;
-    float in2;
-    if constexpr (kIso) {
-        const float d = BoxDistance(q.in[0], n.lo[0], n.hi[0]);
-        in2 = d * d;
-    } else {
-        in2 = BoxDistance2(q.in, n.lo, n.hi);
-        if (in2 > t.chordReach2) return true;
-    }
+GONIO_INLINE unsigned ReachableChildren(const TreeView& t, const SplatTree::Node& n,
+                                        const QueryImage& q) {
+    static_assert(kWidth == 8, "one generic vector per coordinate");
+    Floats8 in2 = {}, out2 = {};
+    for (int dim = 0; dim < (kIso ? 1 : 3); ++dim)
+        AddAxisDistance2(in2, n.lo[dim], n.hi[dim], q.in[dim]);
+    for (int dim = 0; dim < 3; ++dim)
+        AddAxisDistance2(out2, n.lo[3 + dim], n.hi[3 + dim], q.out[dim]);
+    const float reach2 = t.reach * t.reach;
+    // The isotropic θ_in offset is a distance itself, not a chord.
+    Ints8 reach = (out2 <= t.chordReach2) & (in2 <= (kIso ? reach2 : t.chordReach2));
     if constexpr (kNorm == Norm::kL1) {
-        return std::sqrt(in2) + std::sqrt(out2) > t.reach;
+        // √in2 + √out2 <= R without square roots: R² - in2 - out2 >= 2 √(in2 out2).
+        const Floats8 rest = reach2 - in2 - out2;
+        reach &= (rest >= 0.0f) & (4.0f * in2 * out2 <= rest * rest);
     } else if constexpr (kNorm == Norm::kL2) {
-        return in2 + out2 > t.reach * t.reach;
-    } else {
-        return in2 > t.reach * t.reach;
+        reach &= in2 + out2 <= reach2;
+    }
+    return BitMask(reach);
+}
+
+// What the traversal is compiled for: the domain, the norm, the polynomial for the distances and
+// the number of colour components (0: any, summed through memory).
+template <bool kIsotropic, Norm kNormUsed, ChordRange kRangeUsed, int kComponents>
+struct Kind {
+    static constexpr bool kIso = kIsotropic;
+    static constexpr Norm kNorm = kNormUsed;
+    static constexpr ChordRange kRange = kRangeUsed;
+    static constexpr int kComps = kComponents;
+};
+
+// Leaves summed together: each leaf is a long chain of dependent operations (two polynomials in
+// a row), and several chains side by side keep the vector units busy.
+constexpr int kTogether = 2;
+
+// SplatKernelFromChords for the kLeaf splats of one leaf: a straight loop the compiler vectorises.
+template <typename K>
+GONIO_INLINE void LeafKernel(const TreeView& t, const float* __restrict leaf, const QueryImage& q,
+                             float* __restrict kern) {
+    constexpr int kOut = K::kIso ? 1 : 3;  // first outgoing coordinate
+    const float* __restrict out = leaf + kOut * kLeaf;
+    for (int j = 0; j < kLeaf; ++j) {
+        const float chordOut2 =
+            Chord2(q.out[0] - out[j], q.out[1] - out[kLeaf + j], q.out[2] - out[2 * kLeaf + j]);
+        float in2;
+        if constexpr (K::kIso) {
+            const float d = q.in[0] - leaf[j];
+            in2 = d * d;
+        } else {
+            in2 =
+                Chord2(q.in[0] - leaf[j], q.in[1] - leaf[kLeaf + j], q.in[2] - leaf[2 * kLeaf + j]);
+        }
+        kern[j] = SplatKernelFromChords<K::kRange, K::kNorm, K::kIso>(in2, chordOut2,
+                                                                      t.chordRadius2, t.invRadius2);
     }
 }
 
-// Depth first, skipping unreachable subtrees; each leaf adds its float terms to per-slot double
-// sums (lanes[c * kLeaf + j]), as Accumulate adds each term to a double.
-template <bool kIso, Norm kNorm, bool kWide>
-GONIO_INLINE void Traverse(const TreeView& t, const QueryImage& q, double* __restrict lanes) {
-    alignas(64) float kern[kLeaf];
-    for (std::uint32_t node = 0; node < t.numNodes;) {
-        const SplatTree::Node& n = t.nodes[node];
-        if (Unreachable<kIso, kNorm>(t, n, q)) {
-            node = n.skip;
-            continue;
-        }
-        if (n.leaf == 0) {
-            ++node;
-            continue;
-        }
-        const std::size_t block = n.leaf - 1;
-        LeafKernel<kIso, kNorm, kWide>(t, block * kLeaf, q, kern);
-        for (int c = 0; c < t.ncomps; ++c) {
-            const float* __restrict w = t.weights + (block * t.ncomps + c) * kLeaf;
-            float partial[kLanes] = {};
-            for (int g = 0; g < kLeaf; g += kLanes) {
-                for (int j = 0; j < kLanes; ++j) partial[j] += kern[g + j] * w[g + j];
+// Adds the terms of kTogether leaves, each kernel · weight in float as Accumulate computes it, to
+// double sums per component and slot (sums[c], slot j of each leaf in lane j % 8): the kLeaf / 8
+// terms of a leaf that share a lane are added in float first (positive, so within that many float
+// roundings), then in double.
+template <typename K>
+GONIO_INLINE void SumLeaves(const TreeView& t, const float* const* leaves, const QueryImage& q,
+                            Doubles8* __restrict sums) {
+    alignas(64) float values[kTogether * kLeaf];
+    for (int n = 0; n < kTogether; ++n) LeafKernel<K>(t, leaves[n], q, values + n * kLeaf);
+    const int ncomps = K::kComps > 0 ? K::kComps : t.ncomps;
+    for (int n = 0; n < kTogether; ++n) {
+        const float* __restrict weights = leaves[n] + NumCoordinates(K::kIso) * kLeaf;
+        for (int c = 0; c < ncomps; ++c) {
+            Floats8 partial = {};
+            for (int h = 0; h < kLeaf / 8; ++h) {
+                AddProducts(partial, values + n * kLeaf + 8 * h, weights + c * kLeaf + 8 * h);
             }
-            double* __restrict lane = lanes + c * kLanes;
-            for (int j = 0; j < kLanes; ++j) lane[j] += static_cast<double>(partial[j]);
+            sums[c] += __builtin_convertvector(partial, Doubles8);
         }
-        node = n.skip;
     }
 }
 
-template <bool kIso, bool kWide>
-GONIO_INLINE void TraverseNorm(Norm norm, const TreeView& t, const QueryImage& q, double* lanes) {
+// Sums the leaves of a batch, kTogether at a time, the last group filled up with the empty leaf
+// (weights 0) after the real ones; the next group is fetched while one is summed.
+template <typename K>
+GONIO_INLINE void SumBatch(const TreeView& t, std::uint32_t* batch, int size, const QueryImage& q,
+                           Doubles8* sums) {
+    const std::uint32_t empty = t.emptyLeaf;
+    while (size % kTogether) batch[size++] = empty;
+    for (int i = 0; i < size; i += kTogether) {
+        const float* leaves[kTogether];
+        for (int n = 0; n < kTogether; ++n) leaves[n] = t.leaves + batch[i + n] * t.leafStride;
+        if (i + kTogether < size) {
+            for (int n = 0; n < kTogether; ++n) {
+                const float* next = t.leaves + batch[i + kTogether + n] * t.leafStride;
+                for (std::size_t line = 0; line < t.leafStride; line += 16) {
+                    __builtin_prefetch(next + line);
+                }
+            }
+        }
+        SumLeaves<K>(t, leaves, q, sums);
+    }
+}
+
+// Depth first through the nodes whose boxes the query reaches; the leaves it reaches are summed
+// in batches of kBatch. With a known number of components the sums stay in registers.
+template <typename K>
+GONIO_INLINE void Traverse(const TreeView& t, const QueryImage& q, Doubles8* sums) {
+    Doubles8 local[K::kComps > 0 ? K::kComps : 1] = {};
+    Doubles8* into = K::kComps > 0 ? local : sums;
+    std::uint32_t stack[kStackSize];
+    std::uint32_t batch[kBatch + kTogether];
+    int depth = 0, batched = 0;
+    stack[depth++] = 0;
+    while (depth > 0) {
+        const SplatTree::Node& n = t.nodes[stack[--depth]];
+        for (unsigned mask = ReachableChildren<K::kIso, K::kNorm>(t, n, q); mask;
+             mask &= mask - 1) {
+            const std::uint32_t child = n.child[__builtin_ctz(mask)];
+            if (!(child & SplatTree::kLeafFlag)) {
+                stack[depth++] = child;
+                continue;
+            }
+            batch[batched++] = child & ~SplatTree::kLeafFlag;
+            if (batched == kBatch) {
+                SumBatch<K>(t, batch, batched, q, into);
+                batched = 0;
+            }
+        }
+    }
+    SumBatch<K>(t, batch, batched, q, into);
+    if constexpr (K::kComps > 0) {
+        for (int c = 0; c < K::kComps; ++c) sums[c] += local[c];
+    }
+}
+
+template <bool kIso, Norm kNorm, ChordRange kRange>
+GONIO_INLINE void TraverseComps(const TreeView& t, const QueryImage& q, Doubles8* sums) {
+    // Colour (3 components) is the common case; anything else sums through memory.
+    switch (t.ncomps) {
+        case 3:
+            return Traverse<Kind<kIso, kNorm, kRange, 3>>(t, q, sums);
+        default:
+            return Traverse<Kind<kIso, kNorm, kRange, 0>>(t, q, sums);
+    }
+}
+
+template <bool kIso, ChordRange kRange>
+GONIO_INLINE void TraverseNorm(Norm norm, const TreeView& t, const QueryImage& q, Doubles8* sums) {
     switch (norm) {
         case Norm::kL1:
-            return Traverse<kIso, Norm::kL1, kWide>(t, q, lanes);
+            return TraverseComps<kIso, Norm::kL1, kRange>(t, q, sums);
         case Norm::kL2:
-            return Traverse<kIso, Norm::kL2, kWide>(t, q, lanes);
+            return TraverseComps<kIso, Norm::kL2, kRange>(t, q, sums);
         case Norm::kLinf:
-            return Traverse<kIso, Norm::kLinf, kWide>(t, q, lanes);
+            return TraverseComps<kIso, Norm::kLinf, kRange>(t, q, sums);
+    }
+}
+
+template <bool kIso>
+GONIO_INLINE void TraverseRange(Norm norm, const TreeView& t, const QueryImage& q, Doubles8* sums) {
+    switch (ChordRangeFor(t.chordRadius2)) {
+        case ChordRange::kSmall:
+            return TraverseNorm<kIso, ChordRange::kSmall>(norm, t, q, sums);
+        case ChordRange::kMedium:
+            return TraverseNorm<kIso, ChordRange::kMedium>(norm, t, q, sums);
+        case ChordRange::kLarge:
+            return TraverseNorm<kIso, ChordRange::kLarge>(norm, t, q, sums);
     }
 }
 
 GONIO_SIMD_CLONES
-void SumImage(bool isotropic, Norm norm, const TreeView& t, const QueryImage& q, double* lanes) {
-    const bool wide = t.chordRadius2 > 1.0f;  // R > π/3: FastAsin's second branch is reachable
-    if (isotropic) {
-        wide ? TraverseNorm<true, true>(norm, t, q, lanes)
-             : TraverseNorm<true, false>(norm, t, q, lanes);
-    } else {
-        wide ? TraverseNorm<false, true>(norm, t, q, lanes)
-             : TraverseNorm<false, false>(norm, t, q, lanes);
-    }
+void SumImage(bool isotropic, Norm norm, const TreeView& t, const QueryImage& q, Doubles8* sums) {
+    isotropic ? TraverseRange<true>(norm, t, q, sums) : TraverseRange<false>(norm, t, q, sums);
 }
 
-struct Builder {
-    const SplatSet& splats;
-    std::vector<SplatTree::Node>& nodes;
-    std::vector<std::uint32_t>& order;  // splat indices, in leaf order once built
-    bool isotropic;
+// Splats per child of a node over `count` splats: kLeaf · 8^k, the least that needs no more than
+// kWidth children. Every node but those on the path to the last splat is then full.
+std::size_t ChildCapacity(std::size_t count) {
+    std::size_t capacity = kLeaf;
+    while (capacity * kWidth < count) capacity *= kWidth;
+    return capacity;
+}
+
+struct Box {
+    float lo[6], hi[6];
+};
+
+// Orders the splats (median splits on the widest side) and lays out the nodes.
+class Builder {
+  public:
+    Builder(const SplatSet& splats, std::vector<std::uint32_t>& order)
+        : splats_(splats), order_(order), isotropic_(splats.Params().isotropic) {}
+
+    // Sorts order[begin, begin + count) into its leaves, parallel over large ranges.
+    void Sort(std::size_t begin, std::size_t count) const {
+        if (count > static_cast<std::size_t>(kLeaf)) SortPieces(begin, count, ChildCapacity(count));
+    }
+
+    // Boxes of the leaves, once sorted: a node's child box is the union of its leaves' boxes.
+    void BoxLeaves() {
+        leafBoxes_.resize((order_.size() + kLeaf - 1) / kLeaf);
+        for (std::size_t leaf = 0; leaf < leafBoxes_.size(); ++leaf) {
+            const std::size_t begin = leaf * kLeaf;
+            leafBoxes_[leaf] = Bounds(begin, std::min<std::size_t>(kLeaf, order_.size() - begin));
+        }
+    }
+
+    // Creates the node over order[begin, begin + count) and its subtree, once sorted and boxed;
+    // returns its index.
+    std::uint32_t Emit(std::size_t begin, std::size_t count, std::vector<SplatTree::Node>& nodes) {
+        const auto index = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        int slot = 0;
+        SplitIntoPieces(begin, count, ChildCapacity(count), [&](std::size_t b, std::size_t c) {
+            Box box = leafBoxes_[b / kLeaf];
+            for (std::size_t leaf = b / kLeaf + 1; leaf < (b + c + kLeaf - 1) / kLeaf; ++leaf) {
+                for (int dim = 0; dim < 6; ++dim) {
+                    box.lo[dim] = std::min(box.lo[dim], leafBoxes_[leaf].lo[dim]);
+                    box.hi[dim] = std::max(box.hi[dim], leafBoxes_[leaf].hi[dim]);
+                }
+            }
+            const std::uint32_t child =
+                c <= static_cast<std::size_t>(kLeaf)
+                    ? SplatTree::kLeafFlag | static_cast<std::uint32_t>(b / kLeaf)
+                    : Emit(b, c, nodes);
+            SplatTree::Node& n = nodes[index];
+            for (int dim = 0; dim < 6; ++dim) {
+                n.lo[dim][slot] = box.lo[dim];
+                n.hi[dim][slot] = box.hi[dim];
+            }
+            n.child[slot++] = child;
+        });
+        SplatTree::Node& n = nodes[index];
+        for (; slot < kWidth; ++slot) {
+            for (int dim = 0; dim < 6; ++dim) n.lo[dim][slot] = n.hi[dim][slot] = kFarAway;
+            n.child[slot] = SplatTree::kLeafFlag;
+        }
+        return index;
+    }
 
     float Coordinate(std::uint32_t k, int dim) const {
-        const SplatGeometry& g = splats.geometry[k];
+        const SplatGeometry& g = splats_.geometry[k];
         switch (dim) {
             case 0:
-                return isotropic ? g.thetaIn : g.inX;
+                return isotropic_ ? g.thetaIn : g.inX;
             case 1:
-                return g.inY;
+                return isotropic_ ? 0.0f : g.inY;
             case 2:
-                return g.inZ;
+                return isotropic_ ? 0.0f : g.inZ;
             case 3:
                 return g.outX;
             case 4:
@@ -245,55 +351,71 @@ struct Builder {
         }
     }
 
-    bool Used(int dim) const { return !isotropic || dim == 0 || dim >= 3; }
-
-    // Subtree of `node` over order[begin, begin + count), whose leaves start at block firstBlock.
-    void Build(std::uint32_t node, std::size_t begin, std::size_t count, std::size_t firstBlock) {
-        SplatTree::Node& n = nodes[node];
-        n = SplatTree::Node{};
-        int widest = 0;
-        float extent = -1.0f;
+  private:
+    Box Bounds(std::size_t begin, std::size_t count) const {
+        Box box;
         for (int dim = 0; dim < 6; ++dim) {
-            if (!Used(dim)) continue;
-            float lo = Coordinate(order[begin], dim), hi = lo;
+            float lo = Coordinate(order_[begin], dim), hi = lo;
             for (std::size_t i = begin + 1; i < begin + count; ++i) {
-                const float x = Coordinate(order[i], dim);
+                const float x = Coordinate(order_[i], dim);
                 lo = std::min(lo, x);
                 hi = std::max(hi, x);
             }
-            n.lo[dim] = lo;
-            n.hi[dim] = hi;
-            if (hi - lo > extent) extent = hi - lo, widest = dim;
+            box.lo[dim] = lo;
+            box.hi[dim] = hi;
         }
-        const std::size_t blocks = (count + kLeaf - 1) / kLeaf;
-        n.skip = static_cast<std::uint32_t>(node + 2 * blocks - 1);
-        if (blocks == 1) {
-            n.leaf = static_cast<std::uint32_t>(firstBlock + 1);
-            return;
+        return box;
+    }
+
+    // Calls piece(begin, count) for the children of a node over order[begin, begin + count):
+    // halves of whole capacities, split again until each holds at most `capacity` splats.
+    template <typename Piece>
+    static void SplitIntoPieces(std::size_t begin, std::size_t count, std::size_t capacity,
+                                const Piece& piece) {
+        if (count <= capacity) return piece(begin, count);
+        const std::size_t left = (count + capacity - 1) / capacity / 2 * capacity;
+        SplitIntoPieces(begin, left, capacity, piece);
+        SplitIntoPieces(begin + left, count - left, capacity, piece);
+    }
+
+    // The splits of SplitIntoPieces, done: at the median of the widest side, then each piece
+    // sorted into its own children.
+    void SortPieces(std::size_t begin, std::size_t count, std::size_t capacity) const {
+        if (count <= capacity) return Sort(begin, count);
+        const std::size_t left = (count + capacity - 1) / capacity / 2 * capacity;
+        const Box box = Bounds(begin, count);
+        int widest = 0;
+        for (int dim = 1; dim < 6; ++dim) {
+            if (box.hi[dim] - box.lo[dim] > box.hi[widest] - box.lo[widest]) widest = dim;
         }
-        // Split at the median of the widest side, rounded to whole leaves, so that only the last
-        // leaf of the set is partly empty.
-        const std::size_t leftBlocks = blocks / 2, leftCount = leftBlocks * kLeaf;
-        auto first = order.begin() + static_cast<std::ptrdiff_t>(begin);
-        std::nth_element(first, first + static_cast<std::ptrdiff_t>(leftCount),
+        auto first = order_.begin() + static_cast<std::ptrdiff_t>(begin);
+        std::nth_element(first, first + static_cast<std::ptrdiff_t>(left),
                          first + static_cast<std::ptrdiff_t>(count),
                          [&](std::uint32_t a, std::uint32_t b) {
                              const float ca = Coordinate(a, widest), cb = Coordinate(b, widest);
                              return ca < cb || (ca == cb && a < b);
                          });
-        const auto left = [&] { Build(node + 1, begin, leftCount, firstBlock); };
-        const auto right = [&] {
-            Build(static_cast<std::uint32_t>(node + 2 * leftBlocks), begin + leftCount,
-                  count - leftCount, firstBlock + leftBlocks);
-        };
+        const auto lower = [&] { SortPieces(begin, left, capacity); };
+        const auto upper = [&] { SortPieces(begin + left, count - left, capacity); };
         if (count > 65536) {
-            tbb::parallel_invoke(left, right);
+            tbb::parallel_invoke(lower, upper);
         } else {
-            left();
-            right();
+            lower();
+            upper();
         }
     }
+
+    const SplatSet& splats_;
+    std::vector<std::uint32_t>& order_;
+    bool isotropic_;
+    std::vector<Box> leafBoxes_;
 };
+
+// The first 64-byte boundary in the leaf array: each row of kLeaf floats fills a cache line.
+const float* Aligned(const std::vector<float>& v) {
+    const auto address = reinterpret_cast<std::uintptr_t>(v.data());
+    return v.data() + ((64 - address % 64) % 64) / sizeof(float);
+}
 
 }  // namespace
 
@@ -306,30 +428,30 @@ SplatTree::SplatTree(const SplatSet& splats)
       invRadius_(splats.invRadius) {
     const std::size_t size = splats.Size();
     if (size == 0) return;
-    const std::size_t blocks = (size + kLeaf - 1) / kLeaf;
-    nodes_.resize(2 * blocks - 1);
     std::vector<std::uint32_t> order(size);
     std::iota(order.begin(), order.end(), 0u);
-    Builder{splats, nodes_, order, isotropic_}.Build(0, 0, size, 0);
+    Builder builder(splats, order);
+    builder.Sort(0, size);
+    builder.BoxLeaves();
+    builder.Emit(0, size, nodes_);
+    numLeaves_ = (size + kLeaf - 1) / kLeaf;
 
-    const std::size_t slots = blocks * kLeaf;
-    for (std::vector<float>* v : {&centres_.inX, &centres_.inY, &centres_.inZ, &centres_.outX,
-                                  &centres_.outY, &centres_.outZ}) {
-        v->assign(slots, kFarAway);
-    }
-    weights_.assign(slots * ncomps_, 0.0f);
-    for (std::size_t i = 0; i < size; ++i) {
-        const std::uint32_t k = order[i];
-        const SplatGeometry& g = splats.geometry[k];
-        centres_.inX[i] = isotropic_ ? g.thetaIn : g.inX;
-        centres_.inY[i] = g.inY;
-        centres_.inZ[i] = g.inZ;
-        centres_.outX[i] = g.outX;
-        centres_.outY[i] = g.outY;
-        centres_.outZ[i] = g.outZ;
-        const std::size_t block = i / kLeaf, slot = i % kLeaf;
-        for (int c = 0; c < ncomps_; ++c) {
-            weights_[(block * ncomps_ + c) * kLeaf + slot] = splats.weights[k * ncomps_ + c];
+    const int coordinates = NumCoordinates(isotropic_);
+    const std::size_t stride = static_cast<std::size_t>(coordinates + ncomps_) * kLeaf;
+    leaves_.assign((numLeaves_ + 1) * stride + 64 / sizeof(float), 0.0f);
+    float* data = const_cast<float*>(Aligned(leaves_));
+    for (std::size_t leaf = 0; leaf <= numLeaves_; ++leaf) {  // the last one stays empty
+        float* block = data + leaf * stride;
+        std::fill(block, block + coordinates * kLeaf, kFarAway);
+        for (int slot = 0; slot < kLeaf && leaf * kLeaf + slot < size; ++slot) {
+            const std::uint32_t k = order[leaf * kLeaf + slot];
+            for (int c = 0; c < coordinates; ++c) {
+                const int dim = isotropic_ && c > 0 ? c + 2 : c;  // isotropic: θ_in, out x, y, z
+                block[c * kLeaf + slot] = builder.Coordinate(k, dim);
+            }
+            for (int c = 0; c < ncomps_; ++c) {
+                block[(coordinates + c) * kLeaf + slot] = splats.weights[k * ncomps_ + c];
+            }
         }
     }
 }
@@ -340,39 +462,37 @@ void SplatTree::Accumulate(const SplatQuery& q, double* acc) const {
     const double chordReach =
         std::sqrt(static_cast<double>(chordRadius2_)) * (1 + kReachSlack) + 1e-6;
     const TreeView view{nodes_.data(),
-                        static_cast<std::uint32_t>(nodes_.size()),
-                        centres_.inX.data(),
-                        centres_.inY.data(),
-                        centres_.inZ.data(),
-                        centres_.outX.data(),
-                        centres_.outY.data(),
-                        centres_.outZ.data(),
-                        weights_.data(),
+                        Aligned(leaves_),
+                        static_cast<std::size_t>(NumCoordinates(isotropic_) + ncomps_) * kLeaf,
+                        static_cast<std::uint32_t>(numLeaves_),
                         ncomps_,
                         chordRadius2_,
-                        invRadius_,
+                        invRadius_ * invRadius_,
                         static_cast<float>(reach),
                         static_cast<float>(chordReach * chordReach)};
-    double fixed[4 * kLanes];
-    std::vector<double> wide(ncomps_ > 4 ? ncomps_ * kLanes : 0);
-    double* lanes = ncomps_ > 4 ? wide.data() : fixed;
-    std::fill(lanes, lanes + ncomps_ * kLanes, 0.0);
+    // Per component and leaf slot, in double: each term is added as Accumulate adds it.
+    // Per component, in double (lane j: the leaves' slots j, j + 8, ...).
+    Doubles8 fixed[4];
+    // new[] keeps the vectors' alignment (a std::vector would drop it with the type's attribute).
+    std::unique_ptr<Doubles8[]> more(ncomps_ > 4 ? new Doubles8[ncomps_] : nullptr);
+    Doubles8* sums = ncomps_ > 4 ? more.get() : fixed;
+    std::fill(sums, sums + ncomps_, Doubles8{});
     for (int v = 0; v < 6; ++v) {
         if (!(q.activeMask & (1u << v))) continue;
-        const QueryImage image{{isotropic_ ? q.thetaIn[v] : q.inX[v], q.inY[v], q.inZ[v]},
+        const QueryImage image{{isotropic_ ? q.thetaIn[v] : q.inX[v], isotropic_ ? 0.0f : q.inY[v],
+                                isotropic_ ? 0.0f : q.inZ[v]},
                                {q.outX[v], q.outY[v], q.outZ[v]}};
-        SumImage(isotropic_, norm_, view, image, lanes);
+        SumImage(isotropic_, norm_, view, image, sums);
     }
     for (int c = 0; c < ncomps_; ++c) {
         double sum = 0.0;
-        for (int j = 0; j < kLanes; ++j) sum += lanes[c * kLanes + j];
+        for (int j = 0; j < 8; ++j) sum += sums[c][j];
         acc[c] += sum;
     }
 }
 
 std::size_t SplatTree::MemoryBytes() const {
-    return nodes_.size() * sizeof(Node) +
-           sizeof(float) * (centres_.inX.size() * 6 + weights_.size());
+    return nodes_.size() * sizeof(Node) + sizeof(float) * leaves_.size();
 }
 
 }  // namespace gonio

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <random>
@@ -81,16 +82,13 @@ struct Representations {
     std::vector<std::pair<Imath::V3f, Imath::V3f>> queries;
 };
 
-// 300,000 photons, R = 0.5: the thesis's brushed-metal size.
-const Representations& Case(bool isotropic) {
-    static std::map<bool, Representations> cases;
-    Representations& r = cases[isotropic];
-    if (r.simple) return r;
+// The representations of a map at R = 0.5, and 4096 random direction pairs to look up.
+Representations MakeRepresentations(const PhotonMap& map, bool isotropic) {
+    Representations r;
     SplatParams params;
     params.radius = 0.5;
     params.isotropic = isotropic;
-    auto splats =
-        std::make_shared<const SplatSet>(Synthetic("phong:0.5,0.5,10", 300000, isotropic), params);
+    auto splats = std::make_shared<const SplatSet>(map, params);
     int rings, rects;
     DefaultGridFor(params.radius, &rings, &rects);
     r.simple = std::make_unique<BrdfSimple>(splats);
@@ -112,6 +110,28 @@ const Representations& Case(bool isotropic) {
         r.queries.emplace_back(a, direction());
     }
     return r;
+}
+
+// 300,000 photons, R = 0.5: the thesis's brushed-metal size, drawn from a Phong lobe over a
+// Lambert part, so that splats cover the whole domain.
+const Representations& Case(bool isotropic) {
+    static std::map<bool, Representations> cases;
+    Representations& r = cases[isotropic];
+    if (!r.simple)
+        r = MakeRepresentations(Synthetic("phong:0.5,0.5,10", 300000, isotropic), isotropic);
+    return r;
+}
+
+// The thesis's brushed-metal case itself (Table 4.1: 300,000 photons, R = 0.5, anisotropic):
+// the photon map of ribs/brushed_metal.rib, which bench/brdfsim/run_brushed_metal.sh renders
+// and names in GONIO_BRUSHED_METAL_PM. Null without it.
+const Representations* BrushedMetalCase() {
+    static const std::unique_ptr<Representations> r = []() -> std::unique_ptr<Representations> {
+        const char* path = std::getenv("GONIO_BRUSHED_METAL_PM");
+        if (!path) return nullptr;
+        return std::make_unique<Representations>(MakeRepresentations(ReadPhotonMap(path), false));
+    }();
+    return r.get();
 }
 
 void Lookups(benchmark::State& state, const Brdf& brdf, const Representations& r) {
@@ -138,6 +158,18 @@ void BM_LookupBaked(benchmark::State& state) {
     const Representations& r = Case(state.range(0));
     Lookups(state, *r.baked, r);
 }
+void BM_LookupBrushedMetal(benchmark::State& state) {
+    const Representations* r = BrushedMetalCase();
+    if (!r) {
+        state.SkipWithError("set GONIO_BRUSHED_METAL_PM (bench/brdfsim/run_brushed_metal.sh)");
+        return;
+    }
+    const Brdf* representations[] = {r->simple.get(), r->grid.get(), r->baked.get()};
+    Lookups(state, *representations[state.range(0)], *r);
+    state.SetLabel(state.range(0) == 0 ? "simple" : state.range(0) == 1 ? "grid" : "baked");
+}
+BENCHMARK(BM_LookupBrushedMetal)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+
 BENCHMARK(BM_LookupSimple)->ArgName("iso")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LookupGrid)->ArgName("iso")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LookupBaked)->ArgName("iso")->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);

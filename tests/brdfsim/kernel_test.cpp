@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include "splat_set.h"
+
 namespace gonio {
 namespace {
 
@@ -71,6 +73,42 @@ TEST(Kernel, InDomainMassIsFullAwayFromTheHorizonAndHalfOnIt) {
     const double full3 = SphereKernelMass3D(r, Norm::kL2);
     EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, true, 0.0, 0.5) / full3, 0.5, 1e-3);
     EXPECT_NEAR(InDomainKernelMass(r, Norm::kL2, true, 0.7, 0.5) / full3, 1.0, 1e-6);
+}
+
+// ArcLength2FromChord2 replaces 4 asin²(c/2) (two square roots and an asin per splat) by a
+// polynomial in c²: it must agree with the exact value to float rounding over each range, every
+// chord a splat of any radius up to π/2 can reach, down to tiny chords.
+template <ChordRange kRange>
+double WorstRelativeError(float hi) {
+    double worst = 0.0;
+    auto check = [&](float s) {
+        const double exact = std::pow(2.0 * std::asin(0.5 * std::sqrt(static_cast<double>(s))), 2);
+        worst = std::max(worst, std::abs(ArcLength2FromChord2<kRange>(s) / exact - 1.0));
+    };
+    constexpr int kSteps = 100000;
+    for (int i = 1; i <= kSteps; ++i) check(hi * static_cast<float>(i) / kSteps);
+    for (float s = hi; s > 1e-30f; s *= 0.37f) check(s);
+    return worst;
+}
+
+TEST(Kernel, ArcLengthPolynomialsMatchTheExactDistance) {
+    EXPECT_LT(WorstRelativeError<ChordRange::kSmall>(0.25f), 1e-7);
+    EXPECT_LT(WorstRelativeError<ChordRange::kMedium>(1.0f), 1e-7);
+    EXPECT_LT(WorstRelativeError<ChordRange::kLarge>(2.0f), 1e-7);
+}
+
+TEST(Kernel, ChordRangeCoversTheSplatRadius) {
+    for (double r : {0.05, 0.3, 0.5, 0.505, 0.6, 1.0, kPi / 3, 1.2, kPi / 2}) {
+        const float chordRadius2 = static_cast<float>(std::pow(2.0 * std::sin(0.5 * r), 2));
+        const float limit[] = {0.25f, 1.0f, 2.0f};
+        const ChordRange range = ChordRangeFor(chordRadius2);
+        EXPECT_LE(chordRadius2, limit[static_cast<int>(range)]) << r;
+        if (range != ChordRange::kSmall) {
+            EXPECT_GT(chordRadius2, limit[static_cast<int>(range) - 1]) << r;
+        }
+    }
+    EXPECT_EQ(ChordRangeFor(static_cast<float>(std::pow(2.0 * std::sin(0.25), 2))),
+              ChordRange::kSmall);  // R = 0.5, the thesis's brushed metal
 }
 
 TEST(Kernel, ParsesNormNames) {

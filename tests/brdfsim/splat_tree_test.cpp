@@ -1,7 +1,7 @@
 // The splat tree behind grid lookups (issue 4) must give the plain splat sum: every splat and
 // every active image through SplatSet::Accumulate, as BrdfSimple computes it, at many random
-// points, for every norm, both horizon modes, both domains, a radius past π/3 (the second branch
-// of the asin) and more colour components than the fast path keeps on the stack.
+// points, for every norm, both horizon modes, both domains, every range of the chord polynomials
+// (radii up to π/2) and other numbers of colour components than the fast path's three.
 #include "splat_tree.h"
 
 #include <gtest/gtest.h>
@@ -83,6 +83,18 @@ INSTANTIATE_TEST_SUITE_P(
                NormName(std::get<1>(info.param)) + "_" + HorizonName(std::get<2>(info.param)) +
                (std::get<3>(info.param) > 1 ? "_wide" : "_narrow");
     });
+
+// Each polynomial of ArcLength2FromChord2 (ChordRange) is its own copy of the leaf loop: the
+// parameterised cases above cover the small one (R = 0.4) and the large one (R = 1.2); here the
+// medium one and the largest radius allowed, π/2.
+TEST(SplatTree, EveryChordRange) {
+    for (const double radius : {0.8, kPi / 2}) {
+        for (const Norm norm : {Norm::kL1, Norm::kL2, Norm::kLinf}) {
+            ExpectTreeEqualsReference({false, norm, Horizon::kReflect, radius, 3});
+        }
+        ExpectTreeEqualsReference({true, Norm::kL2, Horizon::kReflect, radius, 3});
+    }
+}
 
 TEST(SplatTree, ManyComponents) {
     ExpectTreeEqualsReference({false, Norm::kL2, Horizon::kReflect, 0.5, 6});
