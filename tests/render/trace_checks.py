@@ -23,13 +23,12 @@ All frames go into one RIB file and one `gonio render`; images are read with one
 import argparse
 import math
 import os
-import re
 import struct
 import subprocess
 import sys
 import tempfile
 
-from analytic_checks import render_in_folder
+from analytic_checks import expect, read_images, render_in_folder, run_checks
 
 SHADERS = {
     "mirror.sl": """
@@ -87,15 +86,6 @@ PATCH = 'Patch "bilinear" "P" [-1.5 -1.5 0  1.5 -1.5 0  -1.5 1.5 0  1.5 1.5 0]'
 def camera_xy(x, y):
     """The camera-space point at the centre of pixel (x, y)."""
     return -2 + (x + 0.5) * PIXEL, 2 - (y + 0.5) * PIXEL
-
-
-class CheckFailed(Exception):
-    pass
-
-
-def expect(condition, message):
-    if not condition:
-        raise CheckFailed(message)
 
 
 def write_pfm(path, width, height, value):
@@ -167,33 +157,21 @@ def scene_text():
     return "".join(parts)
 
 
-HEADER = re.compile(r"^(\S.*) :\s+(\d+) x\s+(\d+), (\d+) channel")
-PIXEL_LINE = re.compile(r"^\s+Pixel \((-?\d+), (-?\d+)\): ([^(]*)(?:\((.*)\))?$")
-
-
-def read_images(paths):
-    """{path: {(x, y): [values]}} through one oiiotool call."""
-    proc = subprocess.run(["oiiotool", "--dumpdata", "--info", *paths], capture_output=True,
-                          text=True)
-    expect(proc.returncode == 0, f"oiiotool could not read the images: {proc.stderr}")
-    images, current = [], None
-    for line in proc.stdout.splitlines():
-        if HEADER.match(line):
-            current = {}
-            images.append(current)
-        elif m := PIXEL_LINE.match(line):
-            values = m[4] if m[4] is not None else m[3]
-            current[(int(m[1]), int(m[2]))] = [float(v) for v in values.split()]
-    expect(len(images) == len(paths), f"oiiotool read {len(images)} of {len(paths)} images")
-    return dict(zip(paths, images))
-
-
 CHECKS = {}
 
 
 def check(function):
     CHECKS[function.__name__] = function
     return function
+
+
+class Renders(dict):
+    """The pixels of each frame, {(x, y): [values]} by frame name, and where they were rendered,
+    for the checks that render again."""
+
+    def __init__(self, pixels, gonio, folder):
+        super().__init__(pixels)
+        self.gonio, self.folder = gonio, folder
 
 
 def near(a, b, tol):
@@ -317,7 +295,9 @@ def texture_filters_over_the_pixel_footprint(images):
            f"the filtered checkerboard ranges over [{min(values)}, {max(values)}], not ~0.5")
 
 
-def thread_counts_agree(gonio, folder):
+@check
+def thread_counts_agree(renders):
+    gonio, folder = renders.gonio, renders.folder
     outputs = []
     for threads in (1, 2):
         out = os.path.join(folder, f"threads{threads}.exr")
@@ -333,7 +313,7 @@ def thread_counts_agree(gonio, folder):
         expect(proc.returncode == 0, f"gonio render --threads {threads}: {proc.stderr}")
         outputs.append(out)
     # The pixels, not the files: a file's header has the time it was written.
-    one, two = read_images(outputs).values()
+    one, two = (image.pixels for image in read_images(*outputs))
     differ = sum(1 for xy in one if one[xy] != two[xy])
     expect(differ == 0, f"renders with 1 and 2 threads differ in {differ} pixels")
 
@@ -343,9 +323,10 @@ def main():
     parser.add_argument("--gonio", required=True)
     parser.add_argument("names", nargs="*", help="checks to run (default: all)")
     args = parser.parse_args()
+    unknown = [name for name in args.names if name not in CHECKS]
+    if unknown:
+        parser.error(f"unknown checks {unknown}; the checks are {list(CHECKS)}")
     gonio = os.path.abspath(args.gonio)
-    names = args.names or list(CHECKS) + ["thread_counts_agree"]
-    failures = 0
     with tempfile.TemporaryDirectory(prefix="gonio_trace_") as folder:
         make_textures(folder)
         failure = render_in_folder(gonio, folder, SHADERS, scene_text())
@@ -353,19 +334,9 @@ def main():
             print(failure)
             return 1
         paths = [os.path.join(folder, name + ".exr") for name in FRAMES]
-        images = {os.path.basename(p)[:-4]: image for p, image in read_images(paths).items()}
-        for name in names:
-            try:
-                if name == "thread_counts_agree":
-                    thread_counts_agree(gonio, folder)
-                else:
-                    CHECKS[name](images)
-                print(f"ok   {name}")
-            except (CheckFailed, KeyError) as error:
-                failures += 1
-                print(f"FAIL {name}: {error}")
-    print(f"{failures} of {len(names)} checks failed" if failures else f"all {len(names)} passed")
-    return 1 if failures else 0
+        pixels = {name: image.pixels for name, image in zip(FRAMES, read_images(*paths))}
+        checks = [CHECKS[name] for name in args.names or CHECKS]
+        return run_checks(checks, Renders(pixels, gonio, folder))
 
 
 if __name__ == "__main__":

@@ -118,6 +118,12 @@ TEST(LightPosition, TheSurfacePointUsesTheCachedLights) {
 }
 
 const char* kSkyLight = R"(light sky() { solar () { Cl = 0.5; } })";
+// Ci = the L that illuminance (P) without an axis sees.
+const char* kShowL = R"(surface s() {
+    vector Lseen = 0;
+    illuminance (P) { Lseen = L; }
+    Ci = color(xcomp(Lseen), ycomp(Lseen), zcomp(Lseen));
+})";
 
 TEST(LightPosition, SolarWithoutAxisCountsFullyAlongTheIlluminanceAxis) {
     auto r = RunLit(R"(surface s() {
@@ -134,12 +140,7 @@ TEST(LightPosition, SolarWithoutAxisCountsFullyAlongTheIlluminanceAxis) {
 }
 
 TEST(LightPosition, SolarWithoutAxisArrivesAlongNWithoutAnAxis) {
-    auto r = RunLit(R"(surface s() {
-        vector Lseen = 0;
-        illuminance (P) { Lseen = L; }
-        Ci = color(xcomp(Lseen), ycomp(Lseen), zcomp(Lseen));
-    })",
-                    kSkyLight, 1, 1, "Ci");
+    auto r = RunLit(kShowL, kSkyLight, 1, 1, "Ci");
     ASSERT_EQ(r.values.size(), 3u) << r.diagnostics;
     EXPECT_FLOAT_EQ(r.At(0, 0, 1), 0);
     EXPECT_FLOAT_EQ(r.At(1, 0, 1), 0);
@@ -158,12 +159,8 @@ TEST(LightPosition, SolarWithoutAxisLightsDiffuseAndSpecularFully) {
 }
 
 TEST(LightPosition, SolarWithAnAxisKeepsItsDirection) {
-    auto r = RunLit(R"(surface s() {
-        vector Lseen = 0;
-        illuminance (P) { Lseen = L; }
-        Ci = color(xcomp(Lseen), ycomp(Lseen), zcomp(Lseen));
-    })",
-                    R"(light sun() { solar (vector(0, 1, 0), 0) { Cl = 1; } })", 1, 1, "Ci");
+    auto r =
+        RunLit(kShowL, R"(light sun() { solar (vector(0, 1, 0), 0) { Cl = 1; } })", 1, 1, "Ci");
     ASSERT_EQ(r.values.size(), 3u) << r.diagnostics;
     EXPECT_FLOAT_EQ(r.At(1, 0, 1), -1);  // towards the light: against the axis
 }
