@@ -10,6 +10,7 @@
 // * the splats are copied in leaf order into blocks of kLeafSize, structure of arrays, centres and
 //   weights side by side, so a leaf is one straight, branch-free loop that the compiler
 //   vectorises (no gather, no indirection) over memory read in order;
+// * a grey set (every splat's components equal) keeps one weight a splat;
 // * on x86-64 the traversal is compiled for AVX-512, AVX2 and the baseline SSE2 and picked at run
 //   time (GCC target_clones), so the default build stays portable.
 // Built at load time from the splat set: the .grd format does not change.
@@ -49,7 +50,11 @@ class SplatTree {
     };
 
   private:
+    // Components stored per splat: one when every splat is grey.
+    int StoredComponents() const { return grey_ ? 1 : ncomps_; }
+
     int ncomps_ = 0;
+    bool grey_ = false;  // every splat's components are equal
     bool isotropic_ = false;
     Norm norm_ = Norm::kL2;
     float radius_ = 0.0f, chordRadius2_ = 0.0f, invRadius_ = 0.0f;
