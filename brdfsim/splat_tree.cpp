@@ -21,8 +21,6 @@ constexpr float kFarAway = 1e4f;
 constexpr double kReachSlack = 1e-4;
 // Reachable leaves are gathered in batches, so that the box tests and the leaf loop run apart.
 constexpr int kBatch = 64;
-// Pending nodes: at most kWidth - 1 per level below the root, and no tree has 32 levels.
-constexpr int kStackSize = 32 * kWidth;
 
 // Everything the traversal calls is forced inline: a call from the AVX2 copy into a function
 // compiled for the baseline would cost more than the function.
@@ -40,6 +38,7 @@ constexpr int NumCoordinates(bool isotropic) { return isotropic ? 4 : 6; }
 // What the traversal reads, in plain pointers.
 struct TreeView {
     const SplatTree::Node* nodes;
+    std::size_t numNodes;
     const float* leaves;
     std::size_t leafStride;   // floats per leaf
     std::uint32_t emptyLeaf;  // far from everything, weighing nothing
@@ -184,6 +183,13 @@ GONIO_INLINE void SumLeaves(const TreeView& t, const float* const* leaves, const
     }
 }
 
+GONIO_INLINE void PrefetchNode(const TreeView& t, std::uint32_t node) {
+    const char* data = reinterpret_cast<const char*>(t.nodes + node);
+    for (std::size_t line = 0; line < sizeof(SplatTree::Node); line += 64) {
+        __builtin_prefetch(data + line);
+    }
+}
+
 // Sums the leaves of a batch, kTogether at a time, the last group filled up with the empty leaf
 // (weights 0) after the real ones; the next group is fetched while one is summed.
 template <typename K>
@@ -206,23 +212,35 @@ GONIO_INLINE void SumBatch(const TreeView& t, std::uint32_t* batch, int size, co
     }
 }
 
-// Depth first through the nodes whose boxes the query reaches; the leaves it reaches are summed
-// in batches of kBatch. With a known number of components the sums stay in registers.
+// The nodes a walk has queued, one list per thread, kept from query to query: a node is queued
+// at most once, so it never needs more room than the tree has nodes.
+GONIO_INLINE std::uint32_t* NodeQueue(std::size_t numNodes) {
+    thread_local std::vector<std::uint32_t> queue;
+    if (queue.size() < numNodes) queue.resize(numNodes);
+    return queue.data();
+}
+
+// Breadth first through the nodes whose boxes the query reaches: a node is fetched when it is
+// queued and looked at after the nodes queued before it, so the fetches of a whole level overlap
+// instead of waiting one after another. The leaves it reaches are summed in batches of kBatch.
+// With a known number of components the sums stay in registers.
 template <typename K>
 GONIO_INLINE void Traverse(const TreeView& t, const QueryImage& q, Doubles8* sums) {
     Doubles8 local[K::kComps > 0 ? K::kComps : 1] = {};
     Doubles8* into = K::kComps > 0 ? local : sums;
-    std::uint32_t stack[kStackSize];
+    std::uint32_t* queue = NodeQueue(t.numNodes);
     std::uint32_t batch[kBatch + kTogether];
-    int depth = 0, batched = 0;
-    stack[depth++] = 0;
-    while (depth > 0) {
-        const SplatTree::Node& n = t.nodes[stack[--depth]];
+    std::size_t queued = 0;
+    int batched = 0;
+    queue[queued++] = 0;
+    for (std::size_t next = 0; next < queued; ++next) {
+        const SplatTree::Node& n = t.nodes[queue[next]];
         for (unsigned mask = ReachableChildren<K::kIso, K::kNorm>(t, n, q); mask;
              mask &= mask - 1) {
             const std::uint32_t child = n.child[__builtin_ctz(mask)];
             if (!(child & SplatTree::kLeafFlag)) {
-                stack[depth++] = child;
+                PrefetchNode(t, child);
+                queue[queued++] = child;
                 continue;
             }
             batch[batched++] = child & ~SplatTree::kLeafFlag;
@@ -489,6 +507,7 @@ void SplatTree::Accumulate(const SplatQuery& q, double* acc) const {
         std::sqrt(static_cast<double>(chordRadius2_)) * (1 + kReachSlack) + 1e-6;
     const TreeView view{
         nodes_.data(),
+        nodes_.size(),
         Aligned(leaves_),
         static_cast<std::size_t>(NumCoordinates(isotropic_) + StoredComponents()) * kLeaf,
         static_cast<std::uint32_t>(numLeaves_),
