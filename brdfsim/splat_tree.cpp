@@ -190,6 +190,15 @@ GONIO_INLINE void PrefetchNode(const TreeView& t, std::uint32_t node) {
     }
 }
 
+// Fetches a leaf's cache lines; with a known number of components their count is a constant, and
+// the loop unrolls.
+template <typename K>
+GONIO_INLINE void PrefetchLeaf(const TreeView& t, const float* leaf) {
+    constexpr std::size_t kStride = (NumCoordinates(K::kIso) + K::kComps) * kLeaf;
+    const std::size_t stride = K::kComps > 0 ? kStride : t.leafStride;
+    for (std::size_t line = 0; line < stride; line += 16) __builtin_prefetch(leaf + line);
+}
+
 // Sums the leaves of a batch, kTogether at a time, the last group filled up with the empty leaf
 // (weights 0) after the real ones; the next group is fetched while one is summed.
 template <typename K>
@@ -202,10 +211,7 @@ GONIO_INLINE void SumBatch(const TreeView& t, std::uint32_t* batch, int size, co
         for (int n = 0; n < kTogether; ++n) leaves[n] = t.leaves + batch[i + n] * t.leafStride;
         if (i + kTogether < size) {
             for (int n = 0; n < kTogether; ++n) {
-                const float* next = t.leaves + batch[i + kTogether + n] * t.leafStride;
-                for (std::size_t line = 0; line < t.leafStride; line += 16) {
-                    __builtin_prefetch(next + line);
-                }
+                PrefetchLeaf<K>(t, t.leaves + batch[i + kTogether + n] * t.leafStride);
             }
         }
         SumLeaves<K>(t, leaves, q, sums);
