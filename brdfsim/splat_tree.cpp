@@ -62,6 +62,8 @@ typedef double Doubles8 __attribute__((vector_size(64)));
 // The helpers take and give vectors by reference only: by value, the baseline copy of a function
 // would pass them differently from the AVX copies (GCC's -Wpsabi).
 
+static_assert(kLeaf % 16 == 0, "leaves are summed 16 slots at a time");
+
 // sum += a[0..16) · b[0..16)
 GONIO_INLINE void AddProducts(Floats16& sum, const float* a, const float* b) {
     Floats16 x, y;
