@@ -13,6 +13,7 @@ namespace gonio {
 namespace {
 
 constexpr int kLeaf = SplatTree::kLeafSize;
+static_assert(kLeaf % 16 == 0, "leaves are summed 16 slots at a time");
 constexpr int kWidth = SplatTree::kWidth;
 // Unused slots and boxes: no query comes within any radius of them.
 constexpr float kFarAway = 1e4f;
@@ -61,8 +62,6 @@ typedef double Doubles8 __attribute__((vector_size(64)));
 
 // The helpers take and give vectors by reference only: by value, the baseline copy of a function
 // would pass them differently from the AVX copies (GCC's -Wpsabi).
-
-static_assert(kLeaf % 16 == 0, "leaves are summed 16 slots at a time");
 
 // sum += a[0..16) · b[0..16)
 GONIO_INLINE void AddProducts(Floats16& sum, const float* a, const float* b) {
@@ -315,6 +314,12 @@ std::size_t ChildCapacity(std::size_t count) {
     return capacity;
 }
 
+// Where a node over `count` splats (more than `capacity`) splits in two: half its whole
+// capacities below, the rest above. Sorting and laying out split at the same places.
+std::size_t LowerPieceSize(std::size_t count, std::size_t capacity) {
+    return (count + capacity - 1) / capacity / 2 * capacity;
+}
+
 struct Box {
     float lo[6], hi[6];
 };
@@ -412,7 +417,7 @@ class Builder {
     static void SplitIntoPieces(std::size_t begin, std::size_t count, std::size_t capacity,
                                 const Piece& piece) {
         if (count <= capacity) return piece(begin, count);
-        const std::size_t left = (count + capacity - 1) / capacity / 2 * capacity;
+        const std::size_t left = LowerPieceSize(count, capacity);
         SplitIntoPieces(begin, left, capacity, piece);
         SplitIntoPieces(begin + left, count - left, capacity, piece);
     }
@@ -421,7 +426,7 @@ class Builder {
     // sorted into its own children.
     void SortPieces(std::size_t begin, std::size_t count, std::size_t capacity) const {
         if (count <= capacity) return Sort(begin, count);
-        const std::size_t left = (count + capacity - 1) / capacity / 2 * capacity;
+        const std::size_t left = LowerPieceSize(count, capacity);
         const Box box = Bounds(begin, count);
         int widest = 0;
         for (int dim = 1; dim < 6; ++dim) {
@@ -489,7 +494,7 @@ SplatTree::SplatTree(const SplatSet& splats)
     numLeaves_ = (size + kLeaf - 1) / kLeaf;
 
     const int coordinates = NumCoordinates(isotropic_);
-    const std::size_t stride = static_cast<std::size_t>(coordinates + StoredComponents()) * kLeaf;
+    const std::size_t stride = LeafStride();
     leaves_.assign((numLeaves_ + 1) * stride + 64 / sizeof(float), 0.0f);
     float* data = const_cast<float*>(Aligned(leaves_));
     for (std::size_t leaf = 0; leaf <= numLeaves_; ++leaf) {  // the last one stays empty
@@ -513,17 +518,16 @@ void SplatTree::Accumulate(const SplatQuery& q, double* acc) const {
     const double reach = radius_ * (1 + kReachSlack) + 1e-6;
     const double chordReach =
         std::sqrt(static_cast<double>(chordRadius2_)) * (1 + kReachSlack) + 1e-6;
-    const TreeView view{
-        nodes_.data(),
-        nodes_.size(),
-        Aligned(leaves_),
-        static_cast<std::size_t>(NumCoordinates(isotropic_) + StoredComponents()) * kLeaf,
-        static_cast<std::uint32_t>(numLeaves_),
-        StoredComponents(),
-        chordRadius2_,
-        invRadius_ * invRadius_,
-        static_cast<float>(reach),
-        static_cast<float>(chordReach * chordReach)};
+    const TreeView view{nodes_.data(),
+                        nodes_.size(),
+                        Aligned(leaves_),
+                        LeafStride(),
+                        static_cast<std::uint32_t>(numLeaves_),
+                        StoredComponents(),
+                        chordRadius2_,
+                        invRadius_ * invRadius_,
+                        static_cast<float>(reach),
+                        static_cast<float>(chordReach * chordReach)};
     // Per stored component, in double (lane j: the float lanes j and j + 8 of SumLeaves).
     Doubles8 fixed[4];
     // new[] keeps the vectors' alignment (a std::vector would drop it with the type's attribute).
@@ -543,6 +547,10 @@ void SplatTree::Accumulate(const SplatQuery& q, double* acc) const {
         for (int j = 0; j < 8; ++j) sum += sums[grey_ ? 0 : c][j];
         acc[c] += sum;
     }
+}
+
+std::size_t SplatTree::LeafStride() const {
+    return static_cast<std::size_t>(NumCoordinates(isotropic_) + StoredComponents()) * kLeaf;
 }
 
 std::size_t SplatTree::MemoryBytes() const {

@@ -40,7 +40,6 @@ class SplatTree {
 
     std::size_t MemoryBytes() const;
     std::size_t NumNodes() const { return nodes_.size(); }
-    std::size_t NumLeaves() const { return numLeaves_; }
 
     // Public for the traversal kernels in splat_tree.cpp.
     static constexpr std::uint32_t kLeafFlag = 0x80000000u;
@@ -54,6 +53,8 @@ class SplatTree {
   private:
     // Components stored per splat: one when every splat is grey.
     int StoredComponents() const { return grey_ ? 1 : ncomps_; }
+    // Floats per leaf: kLeafSize values of each coordinate and stored component.
+    std::size_t LeafStride() const;
 
     int ncomps_ = 0;
     bool grey_ = false;  // every splat's components are equal

@@ -183,7 +183,7 @@ void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) co
             if (!tile.film_ || !tile.footprint_.intersects(Imath::V2i(px, py))) continue;
             const size_t pixel = tile.PixelIndex(px, py);
             const float* tileNearest =
-                keepNearest_ ? &tile.nearest_[pixel * (1 + channels)] : nullptr;
+                tile.nearest_.empty() ? nullptr : &tile.nearest_[pixel * (1 + channels)];
             if (tileNearest && tileNearest[0] < nearestDistance) {
                 nearestDistance = tileNearest[0];
                 nearest = tileNearest + 1;
