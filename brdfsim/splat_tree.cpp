@@ -9,6 +9,10 @@
 #include <memory>
 #include <numeric>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace gonio {
 namespace {
 
@@ -22,6 +26,9 @@ constexpr float kFarAway = 1e4f;
 constexpr double kReachSlack = 1e-4;
 // Reachable leaves are gathered in batches, so that the box tests and the leaf loop run apart.
 constexpr int kBatch = 64;
+// The walk fetches the node this many places ahead in its queue while it tests one: far enough
+// for the fetch to arrive from L2 or L3 in time (measured on brushed metal: 2 to 8 do as well).
+constexpr std::size_t kPrefetchAhead = 4;
 
 // Everything the traversal calls is forced inline: a call from the AVX2 copy into a function
 // compiled for the baseline would cost more than the function.
@@ -92,12 +99,20 @@ GONIO_INLINE void AddAxisDistance2(Floats8& sum2, const float* lo, const float* 
     sum2 += d * d;
 }
 
-// Bit j set where lane j of m (all ones or zero) is set.
+// Bit j set where lane j of m (all ones or zero) is set: the sign bits, read four at a time on
+// x86-64 (SSE's movmskps, which every x86-64 has).
 GONIO_INLINE unsigned BitMask(const Ints8& m) {
+#if defined(__x86_64__)
+    __m128 low, high;
+    std::memcpy(&low, &m, sizeof low);
+    std::memcpy(&high, reinterpret_cast<const char*>(&m) + sizeof low, sizeof high);
+    return static_cast<unsigned>(_mm_movemask_ps(low) | (_mm_movemask_ps(high) << 4));
+#else
     const Ints8 bits = m & Ints8{1, 2, 4, 8, 16, 32, 64, 128};
     unsigned mask = 0;
     for (int j = 0; j < 8; ++j) mask |= static_cast<unsigned>(bits[j]);
     return mask;
+#endif
 }
 
 // Lower bounds of the chords from the query to the kWidth boxes of a node, squared, combined in
@@ -220,41 +235,49 @@ GONIO_INLINE void SumBatch(const TreeView& t, std::uint32_t* batch, int size, co
 }
 
 // The nodes a walk has queued, one list per thread, kept from query to query: a node is queued
-// at most once, so it never needs more room than the tree has nodes.
+// at most once, so it never needs more room than the tree has nodes (and kWidth slots past the
+// last, written but not counted).
 GONIO_INLINE std::uint32_t* NodeQueue(std::size_t numNodes) {
     thread_local std::vector<std::uint32_t> queue;
     if (queue.size() < numNodes) queue.resize(numNodes);
     return queue.data();
 }
 
-// Breadth first through the nodes whose boxes the query reaches: a node is fetched when it is
-// queued and looked at after the nodes queued before it, so the fetches of a whole level overlap
-// instead of waiting one after another. The leaves it reaches are summed in batches of kBatch.
-// With a known number of components the sums stay in registers.
+// Breadth first through the nodes whose boxes the query reaches, the node kPrefetchAhead places on
+// in the queue fetched while one is tested, so fetches overlap instead of waiting one after
+// another. A node's children go to the queue (inner nodes) or the batch (leaves) without a branch
+// per child: every child is written, and the count moves on only for those reached (a branch on
+// each child's reach mispredicts often; without it the walk alone takes 2.0 instead of 2.3 us a
+// query on brushed metal). The leaves are summed in batches of about kBatch. With a known number of
+// components the sums stay in registers.
 template <typename K>
 GONIO_INLINE void Traverse(const TreeView& t, const QueryImage& q, Doubles8* sums) {
     Doubles8 local[K::kComps > 0 ? K::kComps : 1] = {};
     Doubles8* into = K::kComps > 0 ? local : sums;
-    std::uint32_t* queue = NodeQueue(t.numNodes);
-    std::uint32_t batch[kBatch + kTogether];
+    std::uint32_t* queue = NodeQueue(t.numNodes + kWidth);
+    std::uint32_t batch[kBatch + kWidth + kTogether];
     std::size_t queued = 0;
     int batched = 0;
     queue[queued++] = 0;
     for (std::size_t next = 0; next < queued; ++next) {
+        const std::size_t ahead = next + kPrefetchAhead;
+        PrefetchNode(t, queue[ahead < queued ? ahead : next]);
         const SplatTree::Node& n = t.nodes[queue[next]];
-        for (unsigned mask = ReachableChildren<K::kIso, K::kNorm>(t, n, q); mask;
-             mask &= mask - 1) {
-            const std::uint32_t child = n.child[__builtin_ctz(mask)];
-            if (!(child & SplatTree::kLeafFlag)) {
-                PrefetchNode(t, child);
-                queue[queued++] = child;
-                continue;
-            }
-            batch[batched++] = child & ~SplatTree::kLeafFlag;
-            if (batched == kBatch) {
-                SumBatch<K>(t, batch, batched, q, into);
-                batched = 0;
-            }
+        const unsigned reached = ReachableChildren<K::kIso, K::kNorm>(t, n, q);
+        Ints8 children;
+        std::memcpy(&children, n.child, sizeof children);
+        const unsigned leaves = reached & BitMask(children < 0);
+        const unsigned inner = reached & ~leaves;
+        for (int j = 0; j < kWidth; ++j) {
+            const std::uint32_t child = n.child[j];
+            queue[queued] = child;
+            queued += (inner >> j) & 1;
+            batch[batched] = child & ~SplatTree::kLeafFlag;
+            batched += (leaves >> j) & 1;
+        }
+        if (batched >= kBatch) {
+            SumBatch<K>(t, batch, batched, q, into);
+            batched = 0;
         }
     }
     SumBatch<K>(t, batch, batched, q, into);
