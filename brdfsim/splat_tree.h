@@ -10,8 +10,8 @@
 // * the splats are copied in leaf order into blocks of kLeafSize, structure of arrays, centres and
 //   weights side by side, so a leaf is one straight, branch-free loop that the compiler
 //   vectorises (no gather, no indirection) over memory read in order;
-// * the walk is breadth first, fetching a few nodes ahead in its queue, and files each child
-//   without a branch on whether it was reached;
+// * the walk is breadth first, fetching a few nodes ahead in its queue, and appends a node's
+//   reached children to the queue and the leaf batch by one shuffle each, without a branch;
 // * a grey set (every splat's components equal) keeps one weight a splat;
 // * on x86-64 the traversal is compiled for AVX-512, AVX2 and the baseline SSE2 and picked at run
 //   time (GCC target_clones), so the default build stays portable.
