@@ -34,7 +34,11 @@ constexpr std::size_t kPrefetchAhead = 4;
 // compiled for the baseline would cost more than the function.
 #define GONIO_INLINE inline __attribute__((always_inline))
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#if defined(GONIO_SPLAT_TREE_ONLY_AVX2)
+// One copy alone, for the tests of the copies a machine would not pick (tests/brdfsim).
+#define GONIO_SIMD_CLONES __attribute__((target("avx2")))
+#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(GONIO_SPLAT_TREE_ONLY_BASELINE)
 // One copy of the traversal per instruction set, chosen once at load time (GCC ifunc).
 #define GONIO_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else

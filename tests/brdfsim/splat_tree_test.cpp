@@ -17,6 +17,17 @@ namespace {
 
 using test::kPi;
 
+#if defined(GONIO_SPLAT_TREE_ONLY_AVX2)
+// The AVX2 copy built alone (CMakeLists.txt) runs only where the CPU has AVX2.
+class NeedsAvx2 : public ::testing::Environment {
+  public:
+    void SetUp() override {
+        if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this CPU has no AVX2";
+    }
+};
+const auto* const kNeedsAvx2 = ::testing::AddGlobalTestEnvironment(new NeedsAvx2);
+#endif
+
 std::vector<double> ReferenceSum(const SplatSet& splats, const SplatQuery& q) {
     std::vector<double> acc(splats.NumComponents(), 0.0);
     for (int v = 0; v < splats.NumImages(); ++v) {
