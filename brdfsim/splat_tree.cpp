@@ -263,7 +263,12 @@ constexpr std::int32_t kLeafIndexBits = static_cast<std::int32_t>(~SplatTree::kL
 GONIO_INLINE void AppendLanes(std::uint32_t* dst, const Ints8& v, unsigned mask) {
     Ints8 lanes;
     std::memcpy(&lanes, kLanePacking.lanes[mask], sizeof lanes);
+#if defined(__GNUC__) && !defined(__clang__)
     const Ints8 packed = __builtin_shuffle(v, lanes);
+#else
+    Ints8 packed;  // Clang shuffles by constant lanes only
+    for (int j = 0; j < 8; ++j) packed[j] = v[lanes[j]];
+#endif
     std::memcpy(dst, &packed, sizeof packed);
 }
 
