@@ -256,6 +256,8 @@ constexpr LanePacking MakeLanePacking() {
 }
 
 constexpr LanePacking kLanePacking = MakeLanePacking();
+// The walk tells leaves from inner nodes by the sign of the child entry.
+static_assert(SplatTree::kLeafFlag == 0x80000000u, "the leaf flag is the sign bit");
 constexpr std::int32_t kLeafIndexBits = static_cast<std::int32_t>(~SplatTree::kLeafFlag);
 
 // Writes the lanes of v set in mask to dst[0, popcount(mask)), in order, with one shuffle and one
@@ -293,6 +295,7 @@ GONIO_INLINE void Traverse(const TreeView& t, const QueryImage& q, Doubles8* sum
     Doubles8 local[K::kComps > 0 ? K::kComps : 1] = {};
     Doubles8* into = K::kComps > 0 ? local : sums;
     std::uint32_t* queue = NodeQueue(t.numNodes + kWidth);
+    // Under kBatch leaves, then a whole node's appended, then the padding of SumBatch.
     std::uint32_t batch[kBatch + kWidth + kTogether];
     std::size_t queued = 0;
     int batched = 0;
