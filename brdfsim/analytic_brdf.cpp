@@ -5,11 +5,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<double> ParseNumberList(const std::string& text) {
     std::vector<double> values;

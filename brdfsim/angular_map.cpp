@@ -12,12 +12,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 using Rgb = std::array<float, 3>;
 
@@ -72,7 +71,8 @@ AngularMapResult WriteAngularMap(const Brdf& brdf, const AngularMapOptions& opti
     const int width = size + gap + bar;
     std::vector<float> pixels(static_cast<std::size_t>(width) * size * 3, 0.0f);
     std::vector<float> rowMax(size, 0.0f);
-    const Imath::V3f wIn = DirectionFromAngles(options.thetaLight * kDeg, options.phiLight * kDeg);
+    const Imath::V3f wIn =
+        DirectionFromAngles(options.thetaLight * kDegree, options.phiLight * kDegree);
     const int n = brdf.NumComponents();
     tbb::parallel_for(0, size, [&](int y) {
         std::vector<float> f(n);

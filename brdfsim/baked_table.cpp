@@ -8,16 +8,15 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "base/math.h"
 #include "splat_set.h"
 
 namespace gonio {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979323846f;
-
-double ThetaNode(int i, int n) { return 0.5 * 3.14159265358979323846 * i / (n - 1); }
-double PhiNode(int j, int n) { return 2 * 3.14159265358979323846 * j / n; }
+double ThetaNode(int i, int n) { return kHalfPi * i / (n - 1); }
+double PhiNode(int j, int n) { return kTwoPi * j / n; }
 
 // atan2 to about 1e-5 radians (a minimax polynomial for atan on [0, 1]): ample for interpolating
 // between nodes a few degrees apart, at a fraction of the library call's cost.
@@ -30,23 +29,23 @@ float FastAtan2(float y, float x) {
         a * (0.99997726f +
              s * (-0.33262347f +
                   s * (0.19354346f + s * (-0.11643287f + s * (0.05265332f - s * 0.0117212f)))));
-    if (ay > ax) r = 0.5f * kPi - r;
-    if (x < 0) r = kPi - r;
+    if (ay > ax) r = 0.5f * kPiF - r;
+    if (x < 0) r = kPiF - r;
     return y < 0 ? -r : r;
 }
 
 // Position of θ (radians) between nodes: index of the lower node and the fraction above it.
 void ThetaCoordinate(float cosTheta, int n, int* i, float* t) {
-    const float theta = 0.5f * kPi - FastAsin(std::clamp(cosTheta, 0.0f, 1.0f));
-    const float u = std::clamp(theta / (0.5f * kPi) * (n - 1), 0.0f, n - 1.0f);
+    const float theta = 0.5f * kPiF - FastAsin(std::clamp(cosTheta, 0.0f, 1.0f));
+    const float u = std::clamp(theta / (0.5f * kPiF) * (n - 1), 0.0f, n - 1.0f);
     *i = std::min(static_cast<int>(u), n - 2);
     *t = u - *i;
 }
 
 void PhiCoordinate(float y, float x, int n, int* j, float* t) {
     float phi = FastAtan2(y, x);
-    if (phi < 0) phi += 2 * kPi;
-    const float u = phi / (2 * kPi) * n;
+    if (phi < 0) phi += 2 * kPiF;
+    const float u = phi / (2 * kPiF) * n;
     *j = std::min(static_cast<int>(u), n - 1);
     *t = u - *j;
 }
@@ -67,11 +66,10 @@ BakedTable::BakedTable(const Brdf& source, int resolution, const ProgressFn& pro
     tbb::parallel_for(0, slices, [&](int slice) {
         const int ti = slice / dims_[1], pi = slice % dims_[1];
         // Grazing nodes are evaluated just inside the domain, where Eval is defined.
-        const double thetaIn = std::min(ThetaNode(ti, dims_[0]), 0.5 * 3.14159265358979 - 1e-4);
+        const double thetaIn = std::min(ThetaNode(ti, dims_[0]), kHalfPi - 1e-4);
         const Imath::V3f wIn = DirectionFromAngles(thetaIn, PhiNode(pi, dims_[1]));
         for (int to = 0; to < dims_[2]; ++to) {
-            const double thetaOut =
-                std::min(ThetaNode(to, dims_[2]), 0.5 * 3.14159265358979 - 1e-4);
+            const double thetaOut = std::min(ThetaNode(to, dims_[2]), kHalfPi - 1e-4);
             for (int po = 0; po < dims_[3]; ++po) {
                 const double phiOut = PhiNode(po, dims_[3]);
                 source.Eval(wIn, DirectionFromAngles(thetaOut, phiOut),

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
+#include "base/math.h"
+
 namespace gonio {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
+namespace {}
 
 Imath::V3f DirectionFromAngles(double theta, double phi) {
     return Imath::V3f(static_cast<float>(std::sin(theta) * std::cos(phi)),
@@ -41,6 +41,25 @@ std::vector<double> Albedo(const Brdf& brdf, const Imath::V3f& wIn, int thetaSte
         for (int c = 0; c < n; ++c) albedo[c] += rows[i * n + c] * weight;
     }
     return albedo;
+}
+
+void EvalPlanes(const Brdf& brdf, int colorComponents, int count, const float* wIn,
+                const float* wOut, const uint8_t* active, float* out) {
+    const int brdfComponents = brdf.NumComponents();
+    std::vector<float> f(static_cast<size_t>(brdfComponents));
+    auto component = [&](int c) {
+        if (brdfComponents == colorComponents) return f[size_t(c)];
+        if (brdfComponents == 1) return f[0];
+        float sum = 0.0f;
+        for (float value : f) sum += value;
+        return sum / static_cast<float>(brdfComponents);
+    };
+    for (int p = 0; p < count; ++p) {
+        if (active && !active[p]) continue;
+        brdf.Eval(Imath::V3f(wIn[p], wIn[count + p], wIn[2 * count + p]),
+                  Imath::V3f(wOut[p], wOut[count + p], wOut[2 * count + p]), f.data());
+        for (int c = 0; c < colorComponents; ++c) out[size_t(c) * count + p] = component(c);
+    }
 }
 
 }  // namespace gonio

@@ -6,6 +6,7 @@
 #include <Imath/ImathVec.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace gonio {
@@ -27,6 +28,14 @@ class Brdf {
 };
 
 Imath::V3f DirectionFromAngles(double theta, double phi);
+
+// f for `count` direction pairs given as planes (3 × count floats each, x then y then z), into
+// colorComponents × count floats, component-major (the shading language's batch layout); only
+// the points with active[p] set (all when active is null) are written. The BRDF's components
+// become the colour's: copied when the counts agree, one (grey) component broadcast, otherwise
+// their mean (the caller says so).
+void EvalPlanes(const Brdf& brdf, int colorComponents, int count, const float* wIn,
+                const float* wOut, const uint8_t* active, float* out);
 
 // ∫ f(ω'→ω) cos θ dω over the outgoing hemisphere, per component, by a product midpoint rule
 // in sin²θ and φ with `thetaSteps` × 2·thetaSteps points, evaluated on both cores.

@@ -4,11 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
 
-constexpr double kHalfPi = 1.5707963267948966;
 // Radii are rounded to this step so kernel masses can be cached.
 constexpr double kRadiusStep = 1e-3;
 

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Cell tests get a little slack so that float rounding in a lookup never misses a splat.
 double SlackRadius(double radius) { return radius * (1 + 1e-5) + 1e-6; }

@@ -4,12 +4,11 @@
 #include <cmath>
 #include <random>
 
+#include "base/math.h"
+
 namespace gonio {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-}  // namespace
+namespace {}  // namespace
 
 PhotonMapSummary SummarizePhotonMap(const std::string& path) {
     PhotonMapReader reader(path);
@@ -49,8 +48,8 @@ void PrintPhotonMapInfo(const std::string& path, const PhotonMapSummary& s, std:
         out, "kind            %s\n",
         s.allPhiInZero ? "isotropic (phi_in = 0: use brdf iopt)" : "anisotropic (use brdf opt)");
     if (s.photons) {
-        std::fprintf(out, "theta_in range  %.2f .. %.2f deg\n", s.thetaInMin / kDeg,
-                     s.thetaInMax / kDeg);
+        std::fprintf(out, "theta_in range  %.2f .. %.2f deg\n", s.thetaInMin / kDegree,
+                     s.thetaInMax / kDegree);
     }
     // Anisotropic: (1/N) Σ β/p_in = ∫ albedo dω' over 2π sr. Isotropic maps give p_in of the
     // rotation-symmetric distribution (docs/formats.md), so the same holds.
@@ -90,7 +89,7 @@ double ReciprocityError(const Brdf& brdf, int pairs) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<float> ab(brdf.NumComponents()), ba(brdf.NumComponents());
     double diff = 0.0, sum = 0.0;
-    const double cosMax = std::cos(80 * kDeg);
+    const double cosMax = std::cos(80 * kDegree);
     for (int i = 0; i < pairs; ++i) {
         const double ta = std::acos(1 - u(rng) * (1 - cosMax)), pa = 2 * kPi * u(rng);
         const double tb = std::acos(1 - u(rng) * (1 - cosMax)), pb = 2 * kPi * u(rng);
@@ -113,7 +112,7 @@ void PrintGrdInfo(const std::string& path, const GrdFile& file, std::FILE* out) 
                  static_cast<unsigned long long>(s.photons),
                  static_cast<unsigned long long>(s.paths));
     std::fprintf(out, "splat radius    %.4f rad (%.2f deg), norm %s, horizon %s\n", s.params.radius,
-                 s.params.radius / kDeg, NormName(s.params.norm), HorizonName(s.params.horizon));
+                 s.params.radius / kDegree, NormName(s.params.norm), HorizonName(s.params.horizon));
     std::fprintf(out, "energy_min      %g\n", s.params.energyMin);
     std::fprintf(out, "kernel mass     %.6g (on the sphere)\n", s.mass);
     const GridStats stats = ComputeGridStats(file.Lists(), s.Size());
@@ -135,7 +134,7 @@ void PrintGrdInfo(const std::string& path, const GrdFile& file, std::FILE* out) 
                  energy[0] / measure, file.IsIsotropic() ? "(pi/2)" : "2pi");
     std::fprintf(out, "albedo          ");
     for (double theta : {0.0, 30.0, 60.0, 80.0}) {
-        const auto a = Albedo(*file.grid, DirectionFromAngles(theta * kDeg, 0.0), 32);
+        const auto a = Albedo(*file.grid, DirectionFromAngles(theta * kDegree, 0.0), 32);
         std::fprintf(out, " %g deg: %.4f ", theta, a[0]);
     }
     std::fprintf(out, " (integral of f cos over the outgoing hemisphere)\n");

@@ -20,9 +20,4 @@ std::shared_ptr<const GrdFile> GrdCache::Get(const std::string& path, std::strin
     return found->second.file;
 }
 
-GrdCache& GrdCache::Shared() {
-    static GrdCache cache;
-    return cache;
-}
-
 }  // namespace gonio

@@ -1,8 +1,8 @@
 #pragma once
-// .grd files loaded once per process and shared by every thread: the brdf() shading builtin
-// asks for a file from each shading batch, so the first request reads it and later ones (from
-// any thread, any frame) get the same BRDF. A file that cannot be read is remembered too, so a
-// bad name costs one attempt and one message, not one per batch.
+// .grd files loaded once and shared by every thread: the brdf() shading builtin asks for a
+// file from each shading batch, so the first request reads it and later ones (from any
+// thread) get the same BRDF. The renderer keeps one cache per render. A file that cannot be read is
+// remembered too, so a bad name costs one attempt and one message, not one per batch.
 
 #include <map>
 #include <memory>
@@ -17,9 +17,6 @@ class GrdCache {
   public:
     // The BRDF in `path`, or null with *error saying why the file cannot be used.
     std::shared_ptr<const GrdFile> Get(const std::string& path, std::string* error);
-
-    // The process-wide cache.
-    static GrdCache& Shared();
 
   private:
     struct Entry {

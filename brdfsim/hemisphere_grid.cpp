@@ -4,12 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/math.h"
+
 namespace gonio {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2 * kPi;
-}  // namespace
+namespace {}  // namespace
 
 HemisphereGrid::HemisphereGrid(int bands, int maxRects)
     : bands_(bands), maxRects_(maxRects), bandWidth_(0.5 * kPi / bands) {

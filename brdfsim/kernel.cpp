@@ -11,11 +11,11 @@
 #include <tuple>
 #include <vector>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Norm ParseNormOrThrow(const std::string& text) {
     if (text == "l1" || text == "L1") return Norm::kL1;

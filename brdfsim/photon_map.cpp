@@ -8,12 +8,13 @@
 #include <cmath>
 #include <cstring>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
 
 constexpr std::size_t kChunkBytes = 8 << 20;
-constexpr float kHalfPi = 1.5707964f;
 constexpr float kAngleSlack = 1e-4f;  // rounding in files written by other programs
 
 bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -40,10 +41,10 @@ std::string CheckPhoton(const float* row, int stride) {
     for (int i = 0; i < stride; ++i) {
         if (!std::isfinite(row[i])) return "expected finite numbers";
     }
-    if (row[kThetaIn] < -kAngleSlack || row[kThetaIn] > kHalfPi + kAngleSlack) {
+    if (row[kThetaIn] < -kAngleSlack || row[kThetaIn] > kHalfPiF + kAngleSlack) {
         return "expected theta_in in [0, pi/2] radians";
     }
-    if (row[kThetaOut] < -kAngleSlack || row[kThetaOut] > kHalfPi + kAngleSlack) {
+    if (row[kThetaOut] < -kAngleSlack || row[kThetaOut] > kHalfPiF + kAngleSlack) {
         return "expected theta_out in [0, pi/2] radians (photons escaping downwards have no line)";
     }
     if (!(row[kProbability] > 0.0f)) return "expected a positive probability";

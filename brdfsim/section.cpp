@@ -6,16 +6,16 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 // Negative zenith: the same zenith on the other side of the pole.
 void Fold(double thetaDeg, double phiDeg, double* theta, double* phi) {
-    *theta = std::abs(thetaDeg) * kDeg;
-    *phi = (thetaDeg < 0 ? phiDeg + 180.0 : phiDeg) * kDeg;
+    *theta = std::abs(thetaDeg) * kDegree;
+    *phi = (thetaDeg < 0 ? phiDeg + 180.0 : phiDeg) * kDegree;
 }
 }  // namespace
 

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/math.h"
 #include "hemisphere_grid.h"
 
 namespace gonio {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // A photon exactly at grazing exit or (isotropic) exactly at the pole has zero density; these
 // floors keep its weight finite without a measurable bias.
 constexpr double kMinCosOut = 1e-6;

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/math.h"
 #include "kernel.h"
 #include "photon_map.h"
 
@@ -89,7 +90,7 @@ inline float FastAsin(float x) {
                      1.6666752422e-1f) *
                         z * s +
                     s;
-    return wide ? 1.5707963267948966f - 2.0f * p : p;
+    return wide ? kHalfPiF - 2.0f * p : p;
 }
 
 // Great-circle distance from the squared chord: accurate for small distances, unlike acos(dot).

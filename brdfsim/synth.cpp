@@ -6,21 +6,14 @@
 #include <array>
 #include <cmath>
 
+#include "base/hash.h"
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kDims = 5;
-
-std::uint64_t SplitMix64(std::uint64_t& state) {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-double ToUnit(std::uint64_t bits) { return (bits >> 11) * (1.0 / 9007199254740992.0); }
 
 // The numbers for photon i depend only on (seed, i): the same map whatever the thread count.
 class PhotonRandom {
@@ -31,7 +24,7 @@ class PhotonRandom {
         std::uint64_t state = options.seed * 0x2545f4914f6cdd1dull + 7;
         for (int d = 0; d < kDims; ++d) {
             alpha_[d] = std::fmod(std::pow(1.0 / phi, d + 1), 1.0);
-            shift_[d] = ToUnit(SplitMix64(state));
+            shift_[d] = ToUnitDouble(SplitMix64(state));
         }
     }
 
@@ -45,7 +38,7 @@ class PhotonRandom {
         } else {
             std::uint64_t state = options_.seed ^ (i * 0xd1b54a32d192ed03ull);
             SplitMix64(state);
-            for (double& x : u) x = ToUnit(SplitMix64(state));
+            for (double& x : u) x = ToUnitDouble(SplitMix64(state));
         }
         return u;
     }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "base/math.h"
 #include "brdf_adaptive.h"
 #include "brdf_cli.h"
 #include "brdf_grid.h"
@@ -56,7 +57,7 @@ double ParseSpread(const std::string& text) {
             "got '" +
             text + "'");
     }
-    return degrees ? value * 3.14159265358979323846 / 180.0 : value;
+    return degrees ? value * kPi / 180.0 : value;
 }
 
 void ProgressLine::operator()(double fraction) {

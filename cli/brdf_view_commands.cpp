@@ -6,6 +6,7 @@
 
 #include "analytic_brdf.h"
 #include "angular_map.h"
+#include "base/math.h"
 #include "brdf_cli.h"
 #include "brdf_report.h"
 #include "plot.h"
@@ -14,8 +15,6 @@
 namespace gonio::brdfcli {
 
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 bool EndsWith(const std::string& text, const std::string& end) {
     return text.size() >= end.size() &&
@@ -38,7 +37,8 @@ void AddEval(CLI::App& brdf, int* exitCode) {
             const LoadedBrdf loaded = LoadBrdf(*path, {}, !*gridOnly);
             const auto& a = *angles;
             std::vector<float> f(loaded.brdf->NumComponents());
-            loaded.brdf->EvalAngles(a[0] * kDeg, a[1] * kDeg, a[2] * kDeg, a[3] * kDeg, f.data());
+            loaded.brdf->EvalAngles(a[0] * kDegree, a[1] * kDegree, a[2] * kDegree, a[3] * kDegree,
+                                    f.data());
             for (std::size_t c = 0; c < f.size(); ++c) {
                 std::printf("%s%.6g", c ? " " : "", f[c]);
             }

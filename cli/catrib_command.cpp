@@ -10,8 +10,8 @@
 #include <memory>
 #include <string>
 
+#include "base/diagnostics.h"
 #include "commands.h"
-#include "rib/diagnostics.h"
 #include "rib/rib_parser.h"
 #include "rib/rib_writer.h"
 

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "rib/rib_parser.h"
 #include "rib/rib_writer.h"
 

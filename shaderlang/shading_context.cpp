@@ -1,9 +1,18 @@
 #include "shaderlang/shading_context.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
 namespace gonio::sl {
+
+bool ShadingContext::MeasuredBrdf(const std::string& name, int count, const float*, const float*,
+                                  const uint8_t*, float* out) {
+    std::fill_n(out, size_t(colorComponents_) * size_t(count), 0.0f);
+    RuntimeWarning("brdf " + name,
+                   "brdf(\"" + name + "\"): measured BRDFs are read by the renderer only");
+    return false;
+}
 
 FileLoc StatementLoc(const std::string& statement, const std::string& fallbackFile) {
     FileLoc loc;

@@ -10,7 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "rib/file_loc.h"
+#include "base/file_loc.h"
+#include "base/hash.h"
 #include "shaderlang/runtime/batch.h"
 #include "shaderlang/types.h"
 
@@ -27,13 +28,6 @@ struct MessageValue {
     FloatArg floats;                    // data == nullptr for a string
     const std::string* text = nullptr;  // a string parameter's value
 };
-
-// SplitMix64's finaliser (Steele, Lea and Flood 2014): a bijective mix with good avalanche.
-inline uint64_t MixBits(uint64_t x) {
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
 
 // One light as seen from a batch of surface points, after its light shader ran there.
 struct LightResult {
@@ -124,6 +118,15 @@ class ShadingContext {
     // the renderer's texture search path; the name itself where there is no such path.
     virtual std::string FindTexture(const std::string& name) const { return name; }
 
+    // brdf(): the measured BRDF in the file `name` (a .grd, found like a texture) for light
+    // arriving from wIn and leaving towards wOut (3 × count each, unit, in the BRDF's local frame:
+    // z the normal, x the direction of anisotropy), at each active point of `count`: ncomps ×
+    // count floats into out. Directions at or below the surface give 0. False (and black) if
+    // the file cannot be used; the context reports why through RuntimeWarning. The default
+    // knows no BRDF files.
+    virtual bool MeasuredBrdf(const std::string& name, int count, const float* wIn,
+                              const float* wOut, const uint8_t* active, float* out);
+
     // trace(P, R): colour arriving at each P from direction R (ncomps × n), by a traced ray.
     virtual void Trace(const float* P, const float* R, const uint8_t* active, float* out) = 0;
 
@@ -158,8 +161,7 @@ class ShadingContext {
     uint64_t NextRandomBits(int point) {
         if (randomState_.size() < size_t(n_)) SeedRandom(nullptr);
         uint64_t& state = randomState_[size_t(point)];
-        state += 0x9e3779b97f4a7c15ull;  // SplitMix64's step
-        return MixBits(state);
+        return SplitMix64(state);
     }
 
     // Reports a run-time problem (division by zero, NaN, a missing texture) once per `key` and

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "rib/search_path.h"
+#include "base/search_path.h"
 #include "shaderlang/compiler/codegen.h"
 #include "shaderlang/compiler/optimizer.h"
 #include "shaderlang/compiler/parser.h"
@@ -190,88 +190,6 @@ bool ShaderInstance::SetParameter(const std::string& name, const std::vector<std
     }
     overrides_[name] = Override{{}, values};
     return true;
-}
-
-bool ShaderInstance::ApplyRibParameters(const ParamList& params, const Declarations& declarations,
-                                        const Imath::M44f& currentFromShader,
-                                        Diagnostics& diagnostics) {
-    bool ok = true;
-    for (const Param& param : params) {
-        std::string bare = param.token.substr(param.token.find_last_of(' ') + 1);
-        const ShaderParam* p = shader_->FindParam(bare);
-        if (!p) {
-            diagnostics.Warning(param.loc, "shader '" + shader_->Name() + "' has no parameter '" +
-                                               bare + "' (ignored)");
-            continue;
-        }
-        std::string error;
-        std::optional<ParamDecl> decl = declarations.Resolve(param.token, &error);
-        if (decl && bare == param.token && !decl->name.empty()) {
-            // A bare token takes the shader's declaration over a global Declare.
-            decl.reset();
-        }
-        if (decl) {
-            BaseType want = p->type.base;
-            bool match = false;
-            switch (decl->type) {
-                case ParamType::Float:
-                case ParamType::Integer:
-                    match = want == BaseType::Float;
-                    break;
-                case ParamType::String:
-                    match = want == BaseType::String;
-                    break;
-                case ParamType::Color:
-                    match = want == BaseType::Color;
-                    break;
-                case ParamType::Point:
-                case ParamType::Vector:
-                case ParamType::Normal:
-                    match = p->type.IsPointLike();
-                    break;
-                case ParamType::Matrix:
-                    match = want == BaseType::Matrix;
-                    break;
-                default:
-                    match = false;
-            }
-            if (!match) {
-                diagnostics.Error(param.loc, "parameter '" + bare + "' is declared " +
-                                                 ToString(decl->type) + " in the RIB but " +
-                                                 ToString(p->type) + " in shader '" +
-                                                 shader_->Name() + "'");
-                ok = false;
-                continue;
-            }
-        }
-        bool set;
-        if (p->type.base == BaseType::String) {
-            set = SetParameter(bare, param.strings, &error);
-        } else {
-            std::vector<float> values(param.numbers.begin(), param.numbers.end());
-            if (p->type.IsPointLike() && values.size() % 3 == 0) {
-                // Points in a RIB parameter list are in shader space (RISpec §11.2).
-                for (size_t k = 0; k + 2 < values.size(); k += 3) {
-                    Imath::V3f v(values[k], values[k + 1], values[k + 2]), r;
-                    if (p->type.base == BaseType::Point) {
-                        currentFromShader.multVecMatrix(v, r);
-                    } else if (p->type.base == BaseType::Vector) {
-                        currentFromShader.multDirMatrix(v, r);
-                    } else {
-                        currentFromShader.inverse().transposed().multDirMatrix(v, r);
-                    }
-                    values[k] = r.x, values[k + 1] = r.y, values[k + 2] = r.z;
-                }
-            }
-            set = param.isString ? false : SetParameter(bare, values, &error);
-            if (param.isString) error = "parameter '" + bare + "' takes numbers, not strings";
-        }
-        if (!set) {
-            diagnostics.Error(param.loc, error);
-            ok = false;
-        }
-    }
-    return ok;
 }
 
 bool ShaderInstance::BindPrimvar(const std::string& name) {

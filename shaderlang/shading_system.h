@@ -6,7 +6,7 @@
 //   system.SetSearchPath("shaders:&");                       // '&' = the previous path
 //   auto plastic = system.Load("plastic", ribLocation);      // cached; nullptr after errors
 //   ShaderInstance instance(plastic);
-//   instance.ApplyRibParameters(params, declarations, currentFromShader, diagnostics);
+//   instance.SetParameter("Kd", {0.5f}, &error);             // false: error says why
 //   instance.Specialize();                                   // folds the instance's constants
 //   ShaderExecutor exec;                                     // one per thread
 //   ShaderGlobals globals;  globals.n = 256; globals.P = ...; // component-major, see batch.h
@@ -24,9 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/declarations.h"
-#include "rib/diagnostics.h"
-#include "rib/param_list.h"
+#include "base/diagnostics.h"
 #include "shaderlang/runtime/batch.h"
 #include "shaderlang/shading_context.h"
 #include "shaderlang/types.h"
@@ -132,13 +130,6 @@ class ShaderInstance {
                       std::string* error);
     bool SetParameter(const std::string& name, const std::vector<std::string>& values,
                       std::string* error);
-    // Applies a RIB parameter list (Surface "plastic" "Kd" 0.5 ...). Tokens may carry inline
-    // declarations; bare names take the shader's declaration (or a Declare'd one). A type or
-    // count that does not match the shader's declaration is an error at the parameter's RIB
-    // location. Point-like values are in shader space and are moved to current space with
-    // `currentFromShader` (row vectors). Unknown names get a warning. False after any error.
-    bool ApplyRibParameters(const ParamList& params, const Declarations& declarations,
-                            const Imath::M44f& currentFromShader, Diagnostics& diagnostics);
     // Makes the varying (or uniform) parameter `name` take its values per point from the
     // primitive variable of the same name, passed in ShaderGlobals::primvars. False if the
     // shader has no parameter of that name.

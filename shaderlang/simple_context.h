@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "shaderlang/shading_context.h"
 #include "shaderlang/shading_system.h"
 

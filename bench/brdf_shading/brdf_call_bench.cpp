@@ -18,6 +18,7 @@
 #include "brdfsim/analytic_brdf.h"
 #include "brdfsim/baked_table.h"
 #include "brdfsim/brdf_grid.h"
+#include "brdfsim/grd_cache.h"
 #include "brdfsim/grd_file.h"
 #include "brdfsim/synth.h"
 #include "shaderlang/shading_system.h"
@@ -65,6 +66,28 @@ const char* const kBrdfBody =
     "    vector Ln = normalize(L);\n"
     "    C += Cl * brdf(grid, Nf, V, Ln, dPdu) * (Nf . Ln);\n"
     "}";
+
+// A scene-less context that reads .grd files the way the renderer's does (NamedTextures):
+// through a cache, evaluated plane by plane.
+class BrdfContext : public sl::SimpleShadingContext {
+  public:
+    using SimpleShadingContext::SimpleShadingContext;
+
+    bool MeasuredBrdf(const std::string& name, int count, const float* wIn, const float* wOut,
+                      const uint8_t* active, float* out) override {
+        std::string error;
+        const std::shared_ptr<const GrdFile> file = cache_.Get(name, &error);
+        if (!file) {
+            std::fprintf(stderr, "brdf_call_bench: %s: %s\n", name.c_str(), error.c_str());
+            std::exit(1);
+        }
+        EvalPlanes(file->Fastest(), ColorComponents(), count, wIn, wOut, active, out);
+        return true;
+    }
+
+  private:
+    GrdCache cache_;
+};
 
 // One surface shader and a distant light over a batch of points on a sphere's front.
 class Shading {
@@ -116,7 +139,7 @@ class Shading {
     }
 
     Diagnostics diagnostics_;
-    sl::SimpleShadingContext context_;
+    BrdfContext context_;
     std::unique_ptr<sl::ShaderInstance> surface_;
     sl::ShaderExecutor executor_;
     sl::ShaderGlobals globals_;

@@ -57,7 +57,7 @@ std::vector<BeamRay> MakeBeams() {
     std::vector<BeamRay> rays;
     for (int i = 0; i < kRays; ++i) {
         uint64_t state = HashCombine(17, i);
-        auto next = [&] { return ToUnitFloat(Mix64(state += 0x9e3779b97f4a7c15ull)); };
+        auto next = [&] { return ToUnitFloat(MixBits(state += kSplitMix64Step)); };
         const float cosT = 1 - next(), phi = 6.2831853f * next();
         const float sinT = std::sqrt(1 - cosT * cosT);
         const V3f w(sinT * std::cos(phi), sinT * std::sin(phi), cosT);
@@ -126,7 +126,7 @@ struct RawEmbree {
     // Embree's own geometric normal until the ray escapes (at most 100). Returns the bounces.
     int TracePath(const BeamRay& beam, uint64_t path) const {
         uint64_t state = HashCombine(99, path);
-        auto next = [&] { return ToUnitFloat(Mix64(state += 0x9e3779b97f4a7c15ull)); };
+        auto next = [&] { return ToUnitFloat(MixBits(state += kSplitMix64Step)); };
         V3f org = beam.org, dir = beam.dir;
         for (int bounce = 0; bounce < 100; ++bounce) {
             RTCIntersectContext context;

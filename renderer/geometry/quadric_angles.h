@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-namespace gonio::quadric {
+#include "base/math.h"
 
-constexpr double kPi = 3.14159265358979323846;
+namespace gonio::quadric {
 
 inline double Radians(double degrees) { return degrees * (kPi / 180); }
 // +1 for zero, so that a degenerate factor never zeroes a normal.

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "base/diagnostics.h"
 #include "image/film.h"
-#include "rib/diagnostics.h"
 #include "rib/param_list.h"
 
 namespace gonio {

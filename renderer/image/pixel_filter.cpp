@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "base/math.h"
+
 namespace gonio {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979323846f;
 
 // Catmull-Rom cubic (Keys' cubic convolution with a = -1/2; Mitchell & Netravali 1988 with
 // B = 0, C = 1/2), support |x| < 2 pixels, 1 at the centre, 0 at every other integer.
@@ -37,7 +37,7 @@ float Mitchell1D(float x) {
 // cos(pi x / (2 width)), which falls to cos(pi/4) at the footprint's edge.
 float WindowedSinc1D(float x, float width) {
     if (x == 0.0f) return 1.0f;
-    float px = kPi * x;
+    float px = kPiF * x;
     return std::cos(0.5f * px / width) * std::sin(px) / px;
 }
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "scene/frame.h"
 
 namespace gonio {

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "base/math.h"
+
 namespace gonio {
 namespace {
 
 using Imath::V3f;
-
-constexpr float kPi = 3.14159265358979f;
 
 V3f Mirror(const V3f& n, const V3f& wi) { return 2 * n.dot(wi) * n - wi; }
 
@@ -64,13 +64,13 @@ MicroBrdf::Value MicroBrdf::ValueWithLobe(const V3f& n, const V3f& wo, float lob
     if (total <= 0) return {0, 0};
     const float cosTheta = std::max(0.0f, n.dot(wo));
     // thesis eq. 3.16 for the specular lobe, cos θ/π for the diffuse one
-    return {ks * (exponent + 2) / (2 * kPi) * lobe,
-            kd / total * cosTheta / kPi + ks / total * (exponent + 1) / (2 * kPi) * lobe};
+    return {ks * (exponent + 2) / (2 * kPiF) * lobe,
+            kd / total * cosTheta / kPiF + ks / total * (exponent + 1) / (2 * kPiF) * lobe};
 }
 
 MicroBrdf::Sampled MicroBrdf::Sample(const V3f& n, const V3f& wi, float u0, float u1,
                                      float u2) const {
-    const float phi = 2 * kPi * u2;
+    const float phi = 2 * kPiF * u2;
     if (u0 * (kd + ks) < kd) {  // cosine-weighted
         const V3f wo = FromLocal(n, std::sqrt(1 - u1), phi);
         return {wo, Evaluate(n, wi, wo)};

@@ -5,7 +5,7 @@
 
 #include <Imath/ImathVec.h>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "scene/attributes.h"
 
 namespace gonio {

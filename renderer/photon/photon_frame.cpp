@@ -7,13 +7,14 @@
 #include <cstdio>
 #include <cstring>
 
+#include "base/math.h"
 #include "photon_map.h"
 #include "render/ray_scene.h"
 
 namespace gonio {
 namespace {
 
-constexpr float kDegrees = 3.14159265358979f / 180;
+constexpr float kDegrees = kPiF / 180;
 
 // Fails early, before minutes of tracing, when the map could not be written.
 bool CheckWritable(const std::string& path, const FileLoc& loc, Diagnostics& diagnostics) {

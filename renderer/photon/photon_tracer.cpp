@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/math.h"
 #include "photon/row_angles.h"
 #include "photon/scene_bounds.h"
 #include "render/progress.h"
@@ -19,7 +20,6 @@ namespace {
 
 using Imath::V3f;
 
-constexpr float kPi = 3.14159265358979f;
 constexpr uint64_t kBatch = 4096;
 constexpr int kFirstColumns = 5;  // θ_in φ_in θ_out φ_out p_in, then the colour
 // A periodic ray that crosses this many tile walls without hitting or leaving the slab of the
@@ -28,8 +28,8 @@ constexpr int kMaxWraps = 10000;
 
 class PathRandom {
   public:
-    PathRandom(uint64_t seed, uint64_t path) : state_(HashCombine(Mix64(seed), path)) {}
-    float Next() { return ToUnitFloat(Mix64(state_ += 0x9e3779b97f4a7c15ull)); }
+    PathRandom(uint64_t seed, uint64_t path) : state_(HashCombine(MixBits(seed), path)) {}
+    float Next() { return ToUnitFloat(MixBits(state_ += kSplitMix64Step)); }
 
   private:
     uint64_t state_;
@@ -111,7 +111,7 @@ class PathTracer {
         float thetaIn, sinIn, cosIn, pIn;
         DrawIncidence(random.Next(), &thetaIn, &sinIn, &cosIn, &pIn);
         const bool fixedAzimuth = c_.settings.isotropic && !c_.settings.averageAzimuth;
-        const float phiIn = fixedAzimuth ? 0.0f : 2 * kPi * random.Next();
+        const float phiIn = fixedAzimuth ? 0.0f : 2 * kPiF * random.Next();
         const V3f wIn(sinIn * std::cos(phiIn), sinIn * std::sin(phiIn), cosIn);
         const float w = 2 * c_.half;
         const V3f x((random.Next() - 0.5f) * w, (random.Next() - 0.5f) * w, 0);
@@ -162,7 +162,7 @@ class PathTracer {
         *theta = t0 + (t1 - t0) * (1 - u);  // in (θmin, θmax]
         *sinTheta = std::sin(*theta);
         *cosTheta = std::cos(*theta);
-        *pIn = 1 / ((t1 - t0) * 2 * kPi * std::max(*sinTheta, 1e-7f));
+        *pIn = 1 / ((t1 - t0) * 2 * kPiF * std::max(*sinTheta, 1e-7f));
     }
 
     static V3f FacingNormal(const V3f& n, const V3f& w) { return n.dot(w) < 0 ? -n : n; }
@@ -181,7 +181,7 @@ class PathTracer {
         bool alive = false;
         for (int k = 0; k < c_.ncomps; ++k) {
             const float cs = k < int(sp.Cs.size()) ? sp.Cs[k] : 1.0f;
-            beta_[k] *= (brdf.kd * cs / kPi + value.specular) * cosOut / value.pdf;
+            beta_[k] *= (brdf.kd * cs / kPiF + value.specular) * cosOut / value.pdf;
             alive |= beta_[k] > 0;
         }
         return alive ? wo : V3f(0);
@@ -198,7 +198,7 @@ class PathTracer {
             phiOut -= phiIn;
             phiIn = 0;
         }
-        phiOut -= 2 * kPi * std::floor(phiOut / (2 * kPi));
+        phiOut -= 2 * kPiF * std::floor(phiOut / (2 * kPiF));
         float* row = out_.rows + out_.values;
         row[0] = thetaIn, row[1] = phiIn, row[2] = PolarAngle(wo.z);
         row[3] = phiOut, row[4] = pIn;
@@ -262,7 +262,7 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     c.half = settings.area / 2;
     c.cosMin = std::cos(settings.thetaMin);
     c.cosMax = std::max(0.0f, std::cos(settings.thetaMax));
-    c.pIn = 1 / (2 * kPi * (c.cosMin - c.cosMax));
+    c.pIn = 1 / (2 * kPiF * (c.cosMin - c.cosMax));
     c.launch = reach + settings.area + 1;
     c.offset = 1e-5f * std::max(bounds.size().length(), 1e-3f);
     // The slab reaches a little past the geometry so that a ground plane at its bottom is hit.

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/math.h"
 #include "photon/micro_brdf.h"
 #include "render/ray_scene.h"
 #include "scene/frame.h"
@@ -29,7 +30,7 @@ struct PhotonTraceSettings {
     uint64_t seed = 0;
     int maxDepth = 100;
     bool periodic = false;
-    float thetaMin = 0, thetaMax = 1.5707964f;  // radians
+    float thetaMin = 0, thetaMax = kHalfPiF;  // radians
     bool progress = false;
 };
 

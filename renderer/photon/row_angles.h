@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/math.h"
+
 namespace gonio {
 
 // arccos(c) for c in [−1, 1] (clamped). Abramowitz & Stegun 4.4.46: for 0 ≤ x ≤ 1,
@@ -23,14 +25,14 @@ inline float PolarAngle(float c) {
     p = p * x - 0.2145988016f;
     p = p * x + 1.5707963050f;
     const float angle = std::sqrt(1 - x) * p;
-    return c < 0 ? 3.14159265358979f - angle : angle;
+    return c < 0 ? kPiF - angle : angle;
 }
 
 // atan2(y, x) in (−π, π]. The ratio of the smaller to the larger of |x|, |y| is brought into
 // [0, tan π/8] (past it, by atan a = π/4 + atan((a − 1)/(a + 1)), one division either way) and
 // atan there is the polynomial of Cephes' atanf (S. L. Moshier), relative error below 2e-7.
 inline float Azimuth(float y, float x) {
-    constexpr float kTanPi8 = 0.41421356237f, kPi = 3.14159265358979f;
+    constexpr float kTanPi8 = 0.41421356237f;
     const float ax = std::fabs(x), ay = std::fabs(y);
     const float big = std::max(ax, ay), small = std::min(ax, ay);
     const bool reduced = small > kTanPi8 * big;
@@ -41,9 +43,9 @@ inline float Azimuth(float y, float x) {
     p = p * z - 1.38776856032e-1f;
     p = p * z + 1.99777106478e-1f;
     p = p * z - 3.33329491539e-1f;
-    float angle = (reduced ? kPi / 4 : 0.0f) + (p * z * a + a);  // atan(small / big)
-    if (ay > ax) angle = kPi / 2 - angle;
-    if (x < 0) angle = kPi - angle;
+    float angle = (reduced ? kPiF / 4 : 0.0f) + (p * z * a + a);  // atan(small / big)
+    if (ay > ax) angle = kPiF / 2 - angle;
+    if (x < 0) angle = kPiF - angle;
     return std::copysign(angle, y);
 }
 

@@ -2,12 +2,11 @@
 
 #include <cmath>
 
+#include "base/math.h"
 #include "render/motion.h"
 
 namespace gonio {
 namespace {
-
-constexpr float kPi = 3.14159265358979323846f;
 
 // Shirley and Chiu's concentric map from the unit square to the unit disk: it keeps the
 // stratification of the lens samples.
@@ -17,10 +16,10 @@ Imath::V2f ConcentricDisk(float u, float v) {
     float r, phi;
     if (std::fabs(a) > std::fabs(b)) {
         r = a;
-        phi = kPi / 4 * (b / a);
+        phi = kPiF / 4 * (b / a);
     } else {
         r = b;
-        phi = kPi / 2 - kPi / 4 * (a / b);
+        phi = kPiF / 2 - kPiF / 4 * (a / b);
     }
     return {r * std::cos(phi), r * std::sin(phi)};
 }
@@ -32,7 +31,7 @@ Camera::Camera(const Options& options)
       motionTimes_(options.cameraMotionTimes),
       cameraFromWorldMotion_(options.cameraMotion),
       perspective_(options.projection == "perspective"),
-      tanHalfFov_(std::tan(options.fov * kPi / 360.f)),
+      tanHalfFov_(std::tan(options.fov * kPiF / 360.f)),
       xres_(options.xres),
       yres_(options.yres),
       nearClip_(options.nearClip),

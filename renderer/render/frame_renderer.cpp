@@ -303,7 +303,7 @@ void TileRenderer::ShadeLayer() {
         if (!attributes->matte) shading_.Shade(batch, Ci_.data(), Oi_.data());
         for (size_t j = 0; j < batchMembers.size(); ++j) {
             SampleState& sample = samples_[hitSamples_[batchMembers[j]]];
-            sample.randomSeed = Mix64(sample.randomSeed);  // the next layer's
+            sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
             // A matte object hides what lies behind it and adds nothing itself (RISpec
             // §4.2.5): its opacity is the surface's Os, not a shader's output.
             const float* opacities =

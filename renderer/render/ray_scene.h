@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "base/diagnostics.h"
 #include "render/surface_point.h"
-#include "rib/diagnostics.h"
 #include "scene/frame.h"
 
 namespace gonio {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/file_loc.h"
+#include "base/file_loc.h"
 
 namespace gonio {
 

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rib/file_loc.h"
+#include "base/file_loc.h"
 #include "rib/param_list.h"
 #include "rib/request_values.h"
 #include "rib/ri_target.h"

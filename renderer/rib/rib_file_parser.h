@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "rib/file_loc.h"
+#include "base/file_loc.h"
 #include "rib/request_table.h"
 #include "rib/request_values.h"
 

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "rib/ri_target.h"
 
 namespace gonio {

@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <memory>
 
+#include "base/search_path.h"
 #include "rib/rib_file_parser.h"
 #include "rib/rib_parser.h"
-#include "rib/search_path.h"
 
 namespace gonio {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "rib/request_table.h"
 #include "rib/ri_target.h"
 

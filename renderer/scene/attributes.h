@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "base/file_loc.h"
 #include "geometry/basis.h"
-#include "rib/file_loc.h"
 #include "rib/param_list.h"
 
 namespace gonio {

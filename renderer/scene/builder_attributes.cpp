@@ -4,13 +4,14 @@
 
 #include <cmath>
 
+#include "base/math.h"
 #include "scene/scene_builder_state.h"
 #include "scene/standard_options.h"
 
 namespace gonio {
 namespace {
 
-constexpr float kDegrees = 3.14159265358979323846f / 180.f;
+constexpr float kDegrees = kPiF / 180.f;
 
 std::string HandleKey(const RtHandle& handle) {
     return (handle.isString ? "s:" : "i:") + handle.text;
@@ -322,7 +323,7 @@ void SceneBuilder::Skew(float angle, float dx1, float dy1, float dz1, float dx2,
     const float perpLen = perp.length();
     const float alpha = std::acos(std::fmax(-1.f, std::fmin(1.f, cosA)));
     const float target = alpha - angle * kDegrees;
-    if (perpLen == 0 || target <= 0 || target >= 3.14159265f) {
+    if (perpLen == 0 || target <= 0 || target >= kPiF) {
         diagnostics_.Error(loc, "Skew: the angle is out of range for these directions");
         return;
     }

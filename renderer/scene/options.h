@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/file_loc.h"
+#include "base/file_loc.h"
 #include "rib/param_list.h"
 #include "scene/attributes.h"
 

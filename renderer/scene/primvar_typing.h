@@ -3,9 +3,9 @@
 
 #include <string>
 
+#include "base/diagnostics.h"
 #include "geometry/primvar.h"
 #include "rib/declarations.h"
-#include "rib/diagnostics.h"
 #include "rib/param_list.h"
 
 namespace gonio {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "base/diagnostics.h"
 #include "geometry/geometry_result.h"
 #include "rib/declarations.h"
-#include "rib/diagnostics.h"
 #include "rib/ri_target.h"
 #include "scene/frame.h"
 

@@ -3,7 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "rib/search_path.h"
+#include "base/search_path.h"
+#include "shading/rib_shader_parameters.h"
 
 namespace gonio {
 namespace {
@@ -83,7 +84,7 @@ std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
         return nullptr;
     }
     auto instance = std::make_shared<sl::ShaderInstance>(shader);
-    instance->ApplyRibParameters(request.params, declarations, currentFromShader, diagnostics);
+    ApplyRibParameters(*instance, request.params, declarations, currentFromShader, diagnostics);
     return instance;
 }
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "base/diagnostics.h"
 #include "render/camera.h"
-#include "rib/diagnostics.h"
 #include "scene/frame.h"
 #include "shaderlang/shading_system.h"
 #include "shading/shader_needs.h"

@@ -26,7 +26,7 @@ constexpr int kTileSize = 16;
 // no lights, shadows or traced rays (those belong to the scene, which is gone by now).
 class ImagerContext : public sl::ShadingContext {
   public:
-    ImagerContext(const Frame& frame, TextureLookup& textures, Diagnostics& diagnostics)
+    ImagerContext(const Frame& frame, ShadingFiles& textures, Diagnostics& diagnostics)
         : frame_(frame),
           diagnostics_(diagnostics),
           textures_(textures, FrameTextureSearchPath(frame)) {}
@@ -78,6 +78,10 @@ class ImagerContext : public sl::ShadingContext {
                                      out);
     }
     std::string FindTexture(const std::string& name) const override { return textures_.Find(name); }
+    bool MeasuredBrdf(const std::string& name, int count, const float* wIn, const float* wOut,
+                      const uint8_t* active, float* out) override {
+        return textures_.MeasuredBrdf(*this, count, name, wIn, wOut, active, out);
+    }
     // The texture's matrices take world space to its camera, and an imager has no world.
     bool TextureInfo(const std::string& name, const std::string& dataname,
                      std::vector<float>* floats, std::string* text) override {
@@ -181,7 +185,7 @@ class ColourConversion {
 // Runs the imager over tiles; one per thread.
 class ImagerWorker {
   public:
-    ImagerWorker(const Frame& frame, sl::ShaderInstance& instance, TextureLookup& textures,
+    ImagerWorker(const Frame& frame, sl::ShaderInstance& instance, ShadingFiles& textures,
                  Diagnostics& diagnostics)
         : frame_(frame),
           instance_(instance),
@@ -217,8 +221,8 @@ void ImagerWorker::RunTile(int x0, int y0, int width, int height, uint64_t seed,
             colours_.FromRgb(pixel, &Ci_[k], size_t(n));
             for (int c = 0; c < ncomps; ++c) Oi_[size_t(c) * n + k] = pixel[kChannelA];
             alpha_[k] = pixel[kChannelA];
-            seeds_[k] = sl::MixBits(
-                seed ^ sl::MixBits((uint64_t(uint32_t(rasterY)) << 32) | uint32_t(rasterX)));
+            seeds_[k] =
+                MixBits(seed ^ MixBits((uint64_t(uint32_t(rasterY)) << 32) | uint32_t(rasterX)));
         }
     }
     sl::ShaderGlobals globals;
@@ -258,7 +262,7 @@ bool ApplyImager(const Frame& frame, uint64_t seed, Image& image, Diagnostics& d
 
     const int tilesX = (image.width + kTileSize - 1) / kTileSize;
     const int tilesY = (image.height + kTileSize - 1) / kTileSize;
-    TextureLookup textures;
+    ShadingFiles textures;
     tbb::enumerable_thread_specific<std::unique_ptr<ImagerWorker>> workers;
     tbb::parallel_for(0, tilesX * tilesY, [&](int tile) {
         const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;

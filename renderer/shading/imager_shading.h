@@ -7,8 +7,8 @@
 
 #include <cstdint>
 
+#include "base/diagnostics.h"
 #include "image/film.h"
-#include "rib/diagnostics.h"
 #include "scene/frame.h"
 
 namespace gonio {

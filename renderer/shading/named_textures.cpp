@@ -1,6 +1,9 @@
 #include "shading/named_textures.h"
 
-#include "rib/search_path.h"
+#include <algorithm>
+#include <memory>
+
+#include "base/search_path.h"
 
 namespace gonio {
 
@@ -35,6 +38,28 @@ bool NamedTextures::Environment(sl::ShadingContext& asker, int n, const std::str
         lookup_.Environment(Find(name), firstChannel, channels, n, directions, active, out);
     if (!ok) asker.RuntimeWarning("environment " + name, "environment \"" + name + "\": " + Why());
     return ok;
+}
+
+bool NamedTextures::MeasuredBrdf(sl::ShadingContext& asker, int count, const std::string& name,
+                                 const float* wIn, const float* wOut, const uint8_t* active,
+                                 float* out) {
+    const int ncomps = asker.ColorComponents();
+    std::fill_n(out, size_t(ncomps) * size_t(count), 0.0f);
+    std::string error;
+    const std::shared_ptr<const GrdFile> file = brdfs_.Get(Find(name), &error);
+    if (!file) {
+        asker.RuntimeWarning("brdf " + name, "brdf(\"" + name + "\"): " + error);
+        return false;
+    }
+    const Brdf& brdf = file->Fastest();
+    if (brdf.NumComponents() != 1 && brdf.NumComponents() != ncomps) {
+        asker.RuntimeWarning("brdf components " + name,
+                             "brdf(\"" + name + "\") has " + std::to_string(brdf.NumComponents()) +
+                                 " colour components, the scene " + std::to_string(ncomps) +
+                                 "; shading with their mean");
+    }
+    EvalPlanes(brdf, ncomps, count, wIn, wOut, active, out);
+    return true;
 }
 
 }  // namespace gonio

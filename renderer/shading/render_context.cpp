@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "image/texture_lookup.h"
+#include "shading/shading_files.h"
 
 namespace gonio {
 namespace {
@@ -15,7 +15,7 @@ V3f ToV3(const float* data, int n, int i) { return V3f(data[i], data[n + i], dat
 }  // namespace
 
 RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
-                             const Camera& camera, TextureLookup& textures,
+                             const Camera& camera, ShadingFiles& textures,
                              sl::ShaderExecutor& lightExecutor, RayTracer& tracer, int depth)
     : shaders_(shaders),
       scene_(scene),
@@ -250,7 +250,7 @@ void RenderContext::Trace(const float* P, const float* R, const uint8_t* active,
         rays.org.push_back(org), rays.dir.push_back(dir), rays.tnear.push_back(tnear);
         traced.push_back(i);
         if (batch_->randomSeeds.size() == size_t(n_))
-            rays.randomSeeds.push_back(sl::MixBits(batch_->randomSeeds[i] ^ uint64_t(depth_ + 1)));
+            rays.randomSeeds.push_back(MixBits(batch_->randomSeeds[i] ^ uint64_t(depth_ + 1)));
         if (!neighbours_) continue;
         NeighbourRays differential;
         for (int axis = 0; axis < 2; ++axis) {

@@ -17,7 +17,7 @@
 
 namespace gonio {
 
-class TextureLookup;
+struct ShadingFiles;
 
 // The rays that trace() follows from one batch, all of one depth, in world space.
 struct TracedRays {
@@ -53,7 +53,7 @@ class RenderContext : public sl::ShadingContext {
   public:
     // `depth`: the depth of the rays whose hits this context shades (0: camera rays).
     RenderContext(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
-                  TextureLookup& textures, sl::ShaderExecutor& lightExecutor, RayTracer& tracer,
+                  ShadingFiles& textures, sl::ShaderExecutor& lightExecutor, RayTracer& tracer,
                   int depth);
 
     // The batch about to be shaded: its points, their current-space positions (3 × n, for the
@@ -89,6 +89,10 @@ class RenderContext : public sl::ShadingContext {
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
                 float* out) override;
     std::string FindTexture(const std::string& name) const override;
+    bool MeasuredBrdf(const std::string& name, int count, const float* wIn, const float* wOut,
+                      const uint8_t* active, float* out) override {
+        return textures_.MeasuredBrdf(*this, count, name, wIn, wOut, active, out);
+    }
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
     bool Attribute(const std::string& name, const sl::TypeSpec& type, int point,
                    std::vector<float>* floats, std::string* text) const override;

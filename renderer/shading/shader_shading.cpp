@@ -9,12 +9,12 @@
 #include <limits>
 #include <unordered_map>
 
-#include "image/texture_lookup.h"
 #include "render/camera.h"
 #include "render/ray_scene.h"
 #include "shading/frame_shaders.h"
 #include "shading/neighbour_points.h"
 #include "shading/render_context.h"
+#include "shading/shading_files.h"
 #include "shading/surface_shading.h"
 
 namespace gonio {
@@ -46,7 +46,7 @@ int OutputFloats(const std::vector<ShaderOutput>& outputs) {
 class DepthShader {
   public:
     DepthShader(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
-                TextureLookup& textures, RayTracer& tracer, int depth, ShadingWorker& fallback)
+                ShadingFiles& textures, RayTracer& tracer, int depth, ShadingWorker& fallback)
         : shaders_(shaders),
           scene_(scene),
           context_(shaders, scene, camera, textures, lightExecutor_, tracer, depth),
@@ -139,7 +139,7 @@ void DepthShader::AddNeighbourPoints(ShadingBatch* chunk, const NeighbourRays* r
             chunk->depth.push_back(chunk->depth[i]);
             // A neighbour point draws its own random numbers, but the same ones every render.
             if (chunk->randomSeeds.size() > size_t(i))
-                chunk->randomSeeds.push_back(sl::MixBits(chunk->randomSeeds[i] + axis + 1));
+                chunk->randomSeeds.push_back(MixBits(chunk->randomSeeds[i] + axis + 1));
         }
     }
     // Point i's neighbours are m+i (along x) and 2m+i (along y). The neighbours get two
@@ -335,7 +335,7 @@ bool NextHit(const RayScene& scene, const V3f& org, const V3f& dir, float time, 
 class ShaderWorker : public ShadingWorker, public RayTracer {
   public:
     ShaderWorker(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
-                 TextureLookup& textures, const SurfaceShading& fallback)
+                 ShadingFiles& textures, const SurfaceShading& fallback)
         : shaders_(shaders),
           scene_(scene),
           camera_(camera),
@@ -363,7 +363,7 @@ class ShaderWorker : public ShadingWorker, public RayTracer {
     const FrameShaders& shaders_;
     const RayScene& scene_;
     const Camera& camera_;
-    TextureLookup& textures_;
+    ShadingFiles& textures_;
     std::unique_ptr<ShadingWorker> fallback_;
     int ncomps_;
     std::vector<std::unique_ptr<DepthShader>> depths_;
@@ -418,7 +418,7 @@ void ShaderWorker::TraceRays(int depth, const TracedRays& rays, float* colours) 
                 shaders_.CurrentFromWorld().multVecMatrix(points[k].P, current);
                 batch.depth.push_back(current.z);
                 if (rays.randomSeeds.size() == size_t(count))
-                    batch.randomSeeds.push_back(sl::MixBits(rays.randomSeeds[r] + layer));
+                    batch.randomSeeds.push_back(MixBits(rays.randomSeeds[r] + layer));
                 if (!neighbours) continue;
                 batch.neighbourRays.push_back(rays.neighbours[r]);
                 batch.neighbourRays.back().tnear = hitTnear[k];
@@ -491,7 +491,7 @@ class ShaderShading : public SurfaceShading {
     FrameShaders shaders_;
     const RayScene& scene_;
     const Camera& camera_;
-    mutable TextureLookup textures_;  // thread-safe
+    mutable ShadingFiles textures_;  // thread-safe
     std::unique_ptr<SurfaceShading> fallback_;
 };
 

@@ -5,7 +5,7 @@
 
 #include <unordered_map>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "shaderlang/compiler/ast.h"
 #include "shaderlang/compiler/typecheck.h"
 #include "shaderlang/runtime/opcodes.h"

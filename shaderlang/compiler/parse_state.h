@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "shaderlang/compiler/ast.h"
 #include "shaderlang/compiler/parser.h"
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "shaderlang/compiler/ast.h"
 
 namespace gonio::sl {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 
 namespace gonio::sl {
 

@@ -5,7 +5,7 @@
 // points and colours do not mix, comparison results only as conditions, shader parameters have
 // defaults. Every error is reported (`file.sl:LINE:COL: error: ...`), never just the first.
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "shaderlang/compiler/ast.h"
 #include "shaderlang/compiler/symtab.h"
 #include "shaderlang/shading_system.h"

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/math.h"
 #include "shaderlang/runtime/builtins_derivatives.h"
 #include "shaderlang/runtime/builtins_util.h"
 #include "shaderlang/shading_context.h"
@@ -11,8 +12,6 @@
 namespace gonio::sl::builtins {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979323846f;
 
 // ---- float -> float ------------------------------------------------------------------------
 
@@ -34,8 +33,8 @@ void BinaryKernel(const BuiltinCall& call) {
     });
 }
 
-float Radians(float x) { return x * (kPi / 180.0f); }
-float Degrees(float x) { return x * (180.0f / kPi); }
+float Radians(float x) { return x * (kPiF / 180.0f); }
+float Degrees(float x) { return x * (180.0f / kPiF); }
 float Sin(float x) { return std::sin(x); }
 float Cos(float x) { return std::cos(x); }
 float Tan(float x) { return std::tan(x); }

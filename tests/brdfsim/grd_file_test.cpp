@@ -13,9 +13,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 using test::TempPath;
 
 std::string Slurp(const std::string& path) {
@@ -66,8 +63,8 @@ TEST(GrdFile, RoundTripIsBitExact) {
     for (double ti : {0.0, 20.0, 50.0, 85.0}) {
         for (double to : {0.0, 35.0, 80.0}) {
             float a[3], b[3];
-            original.EvalAngles(ti * kDeg, 0.4, to * kDeg, 2.0, a);
-            file.grid->EvalAngles(ti * kDeg, 0.4, to * kDeg, 2.0, b);
+            original.EvalAngles(ti * kDegree, 0.4, to * kDegree, 2.0, a);
+            file.grid->EvalAngles(ti * kDegree, 0.4, to * kDegree, 2.0, b);
             for (int c = 0; c < 3; ++c) EXPECT_EQ(a[c], b[c]);
         }
     }
@@ -102,8 +99,8 @@ TEST(GrdFile, BakedTableInterpolatesTheGrid) {
     double worst = 0;
     for (double ti = 5; ti < 80; ti += 7) {
         for (double to = 5; to < 80; to += 7) {
-            file.grid->EvalAngles(ti * kDeg, 0, to * kDeg, 1.0, grid);
-            file.baked->EvalAngles(ti * kDeg, 0, to * kDeg, 1.0, baked);
+            file.grid->EvalAngles(ti * kDegree, 0, to * kDegree, 1.0, grid);
+            file.baked->EvalAngles(ti * kDegree, 0, to * kDegree, 1.0, baked);
             worst = std::max<double>(worst, std::abs(baked[0] - grid[0]) / grid[0]);
         }
     }

@@ -13,9 +13,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 TEST(HemisphereGrid, CellsPerBandFollowEquation414) {
     // thesis eq. 4.14 with 4 bands and n_max = 5 gives 2, 4, 5, 5 (the thesis's text says
     // 2, 4, 4, 5 for its figure 4.3; round(5 sin 67.5°) = round(4.62) = 5).
@@ -30,10 +27,10 @@ TEST(HemisphereGrid, CellsPerBandFollowEquation414) {
 
 TEST(HemisphereGrid, CellOfFindsBandAndRect) {
     const HemisphereGrid grid(4, 5);
-    EXPECT_EQ(grid.CellOf(DirectionFromAngles(10 * kDeg, 10 * kDeg)), 0);
-    EXPECT_EQ(grid.CellOf(DirectionFromAngles(10 * kDeg, 190 * kDeg)), 1);
-    EXPECT_EQ(grid.CellOf(DirectionFromAngles(30 * kDeg, 100 * kDeg)), 2 + 1);
-    EXPECT_EQ(grid.CellOf(DirectionFromAngles(89 * kDeg, 359 * kDeg)), 15);
+    EXPECT_EQ(grid.CellOf(DirectionFromAngles(10 * kDegree, 10 * kDegree)), 0);
+    EXPECT_EQ(grid.CellOf(DirectionFromAngles(10 * kDegree, 190 * kDegree)), 1);
+    EXPECT_EQ(grid.CellOf(DirectionFromAngles(30 * kDegree, 100 * kDegree)), 2 + 1);
+    EXPECT_EQ(grid.CellOf(DirectionFromAngles(89 * kDegree, 359 * kDegree)), 15);
 }
 
 TEST(HemisphereGrid, DistanceToCellIsTheExactMinimum) {
@@ -66,8 +63,10 @@ TEST(HemisphereGrid, DistanceToCellIsTheExactMinimum) {
 std::vector<std::array<double, 4>> ProbePoints(int count) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(0, 1);
-    std::vector<std::array<double, 4>> points = {
-        {0, 0, 0, 0}, {0, 1, 89.5 * kDeg, 2}, {89.5 * kDeg, 3, 89.5 * kDeg, 1}, {1.2, 0, 0, 0}};
+    std::vector<std::array<double, 4>> points = {{0, 0, 0, 0},
+                                                 {0, 1, 89.5 * kDegree, 2},
+                                                 {89.5 * kDegree, 3, 89.5 * kDegree, 1},
+                                                 {1.2, 0, 0, 0}};
     while (static_cast<int>(points.size()) < count) {
         points.push_back(
             {0.5 * kPi * u(rng), 2 * kPi * u(rng), 0.5 * kPi * u(rng), 2 * kPi * u(rng)});

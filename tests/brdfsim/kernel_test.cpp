@@ -7,12 +7,11 @@
 #include <cmath>
 #include <random>
 
+#include "base/math.h"
 #include "splat_set.h"
 
 namespace gonio {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(Kernel, PolynomialShape) {
     EXPECT_DOUBLE_EQ(SplatKernel(0.0), 1.0);

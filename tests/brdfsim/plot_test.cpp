@@ -58,7 +58,7 @@ std::pair<int, float> NearestRow(const Image& image, int x, int top, int bottom,
     return {best, bestDistance};
 }
 
-double Curve(double x) { return 0.5 + 0.35 * std::sin(x * test::kDeg * 2); }
+double Curve(double x) { return 0.5 + 0.35 * std::sin(x * kDegree * 2); }
 
 std::vector<PlotSeries> TwoSeries() {
     PlotSeries wave{"wave", {}, {}, false}, flat{"flat", {}, {}, true};
@@ -202,11 +202,11 @@ TEST(Section, RelativeCutCountsPhiOutFromPhiIn) {
     cut.relativePhi = true;
     double ti, pi, to, po;
     CutAngles(cut, 30, &ti, &pi, &to, &po);
-    EXPECT_NEAR(pi, 90 * test::kDeg, 1e-12);
-    EXPECT_NEAR(po, 120 * test::kDeg, 1e-12);
+    EXPECT_NEAR(pi, 90 * kDegree, 1e-12);
+    EXPECT_NEAR(po, 120 * kDegree, 1e-12);
     cut.relativePhi = false;
     CutAngles(cut, 30, &ti, &pi, &to, &po);
-    EXPECT_NEAR(po, 30 * test::kDeg, 1e-12);
+    EXPECT_NEAR(po, 30 * kDegree, 1e-12);
 }
 
 }  // namespace

@@ -16,9 +16,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 const AnalyticBrdf kLambert = AnalyticBrdf::Parse("lambert:0.5");
 const AnalyticBrdf kPhong = AnalyticBrdf::Parse("phong:0,1,25");
 
@@ -57,8 +54,8 @@ TEST(Reconstruction, LambertAnisotropicIsUnbiased) {
         for (double to : {0, 10, 20, 30, 40, 50, 60, 70, 80, 85}) {
             for (int pi = 0; pi < 4; ++pi) {
                 for (int po = 0; po < 8; ++po) {
-                    grid.EvalAngles(ti * kDeg, pi * kPi / 2 + 0.3, to * kDeg, po * kPi / 4 + 0.1,
-                                    f);
+                    grid.EvalAngles(ti * kDegree, pi * kPi / 2 + 0.3, to * kDegree,
+                                    po * kPi / 4 + 0.1, f);
                     const double rel = f[0] / (0.5 / kPi) - 1;
                     sum += rel;
                     worst = std::max(worst, std::abs(rel));
@@ -77,7 +74,7 @@ double MeanErrorAtThetaOut(const Brdf& brdf, double thetaOutDeg) {
     float f[1];
     for (double ti = 0; ti <= 85; ti += 5) {
         for (int po = 0; po < 8; ++po) {
-            brdf.EvalAngles(ti * kDeg, 0, thetaOutDeg * kDeg, po * kPi / 4, f);
+            brdf.EvalAngles(ti * kDegree, 0, thetaOutDeg * kDegree, po * kPi / 4, f);
             sum += f[0] / (0.5 / kPi) - 1;
             ++n;
         }
@@ -100,7 +97,7 @@ TEST(Reconstruction, EnergyMatchesThePhotonsAtEveryIncidence) {
     // smoothing small. The Phong albedo falls steeply towards grazing incidence, so at 80° the
     // reconstruction (like the photons) sees it smoothed over ±R: 1.6% above the analytic value.
     for (double ti : {0.0, 30.0, 60.0, 80.0}) {
-        const Imath::V3f wIn = DirectionFromAngles(ti * kDeg, 0);
+        const Imath::V3f wIn = DirectionFromAngles(ti * kDegree, 0);
         const double lambert = Albedo(LambertIso(Horizon::kReflect), wIn, 32)[0];
         EXPECT_NEAR(lambert, 0.5, 0.005) << ti;
         EXPECT_NEAR(lambert / PhotonEnergyAt(LambertIso(Horizon::kReflect).Splats(), wIn)[0], 1.0,
@@ -108,7 +105,7 @@ TEST(Reconstruction, EnergyMatchesThePhotonsAtEveryIncidence) {
             << ti;
         const double phong = Albedo(PhongIso(), wIn, 48)[0];  // a sharp lobe needs more points
         EXPECT_NEAR(phong / PhotonEnergyAt(PhongIso().Splats(), wIn)[0], 1.0, 0.01) << ti;
-        EXPECT_NEAR(phong / kPhong.Albedo(ti * kDeg), 1.0, ti < 70 ? 0.01 : 0.025) << ti;
+        EXPECT_NEAR(phong / kPhong.Albedo(ti * kDegree), 1.0, ti < 70 ? 0.01 : 0.025) << ti;
     }
 }
 
@@ -123,7 +120,7 @@ TEST(Reconstruction, PhongPeakAndWidthAsSmoothingPredicts) {
     const double sigma2 = 1 / n, s2 = 0.1041 * radius * radius;
     const double peakFactor = std::sqrt(sigma2 / 2 / (sigma2 / 2 + s2) * sigma2 / (sigma2 + s2));
     const double analyticPeak = (n + 2) / (2 * kPi);
-    const double analyticFwhm = 2 * std::acos(std::pow(0.5, 1 / n)) / kDeg;
+    const double analyticFwhm = 2 * std::acos(std::pow(0.5, 1 / n)) / kDegree;
     const double predictedFwhm = analyticFwhm * std::sqrt((sigma2 + 2 * s2) / sigma2);
     for (double ti : {0.0, 30.0, 60.0}) {
         const test::Lobe lobe = test::PlaneOfIncidenceLobe(PhongIso(), ti);
@@ -168,10 +165,10 @@ TEST(Reconstruction, AdaptiveRadiusFollowsThePhotonDensity) {
     // picked; and a constant BRDF comes back at 0.5/π (noise about 1/sqrt(k): 2.4% at k = 8000).
     auto phong = test::SyntheticSplats("phong:0,1,25", 50000, true, true, 0.15);
     const BrdfAdaptive lobe(phong, 100);
-    const Imath::V3f light = DirectionFromAngles(30 * kDeg, kPi);
-    const Imath::V3f mirror = DirectionFromAngles(30 * kDeg, 0);
+    const Imath::V3f light = DirectionFromAngles(30 * kDegree, kPi);
+    const Imath::V3f mirror = DirectionFromAngles(30 * kDegree, 0);
     const double atPeak = lobe.RadiusAt(light, mirror);
-    EXPECT_LT(atPeak, 0.5 * lobe.RadiusAt(light, DirectionFromAngles(60 * kDeg, kPi / 2)));
+    EXPECT_LT(atPeak, 0.5 * lobe.RadiusAt(light, DirectionFromAngles(60 * kDegree, kPi / 2)));
     SynthOptions options;
     options.paths = 50000;
     options.isotropic = true;
@@ -192,7 +189,7 @@ TEST(Reconstruction, AdaptiveRadiusFollowsThePhotonDensity) {
     float f[1];
     for (double ti : {0.0, 40.0, 85.0}) {
         for (double to : {0.0, 50.0, 85.0}) {
-            flat.EvalAngles(ti * kDeg, 0, to * kDeg, 2.0, f);
+            flat.EvalAngles(ti * kDegree, 0, to * kDegree, 2.0, f);
             EXPECT_NEAR(f[0] / (0.5 / kPi), 1.0, 0.04) << ti << " " << to;
         }
     }

@@ -15,8 +15,6 @@
 namespace gonio {
 namespace {
 
-using test::kPi;
-
 #if defined(GONIO_SPLAT_TREE_ONLY_AVX2)
 // The AVX2 copy built alone (CMakeLists.txt) runs only where the CPU has AVX2.
 class NeedsAvx2 : public ::testing::Environment {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analytic_brdf.h"
+#include "base/math.h"
 #include "brdf.h"
 #include "splat_set.h"
 #include "synth.h"
@@ -24,9 +25,6 @@ inline std::string TempPath(const std::string& name) {
     return ::testing::TempDir() + "brdf_" + test->test_suite_name() + "_" + test->name() + "_" +
            name;
 }
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 inline std::shared_ptr<SplatSet> SyntheticSplats(const std::string& model, std::uint64_t paths,
                                                  bool isotropic, bool stratified, double radius,
@@ -65,8 +63,8 @@ inline ErrorStats CompareOnDenseSet(const Brdf& brdf, const AnalyticBrdf& refere
             for (double to = 0; to <= thetaMaxDeg + 1e-9; to += 5) {
                 for (int po = 0; po < 8; ++po) {
                     const double phiIn = pi * kPi / 2 + 0.3, phiOut = po * kPi / 4 + 0.1;
-                    const Imath::V3f wIn = DirectionFromAngles(ti * kDeg, phiIn);
-                    const Imath::V3f wOut = DirectionFromAngles(to * kDeg, phiOut);
+                    const Imath::V3f wIn = DirectionFromAngles(ti * kDegree, phiIn);
+                    const Imath::V3f wOut = DirectionFromAngles(to * kDegree, phiOut);
                     brdf.Eval(wIn, wOut, f.data());
                     const double ref = reference.Eval(Imath::V3d(wIn.x, wIn.y, wIn.z),
                                                       Imath::V3d(wOut.x, wOut.y, wOut.z));
@@ -115,7 +113,8 @@ inline Lobe PlaneOfIncidenceLobe(const Brdf& brdf, double thetaInDeg) {
     std::vector<double> xs, ys;
     std::vector<float> f(brdf.NumComponents());
     for (double x = -89; x <= 89; x += 0.25) {
-        brdf.EvalAngles(thetaInDeg * kDeg, kPi, std::abs(x) * kDeg, x < 0 ? kPi : 0, f.data());
+        brdf.EvalAngles(thetaInDeg * kDegree, kPi, std::abs(x) * kDegree, x < 0 ? kPi : 0,
+                        f.data());
         xs.push_back(x);
         ys.push_back(f[0]);
     }

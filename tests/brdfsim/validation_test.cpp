@@ -11,9 +11,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 const AnalyticBrdf kLambert = AnalyticBrdf::Parse("lambert:0.5");
 
 TEST(Validation, Lambert1MAnisotropic) {
@@ -43,7 +40,7 @@ TEST(Validation, Phong1MPeakAndWidth) {
     const double peakFactor = std::sqrt(sigma2 / 2 / (sigma2 / 2 + s2) * sigma2 / (sigma2 + s2));
     const double analyticPeak = (n + 2) / (2 * kPi);
     const double predictedFwhm =
-        2 * std::acos(std::pow(0.5, 1 / n)) / kDeg * std::sqrt((sigma2 + 2 * s2) / sigma2);
+        2 * std::acos(std::pow(0.5, 1 / n)) / kDegree * std::sqrt((sigma2 + 2 * s2) / sigma2);
     for (double ti : {0.0, 30.0, 60.0}) {
         const test::Lobe lobe = test::PlaneOfIncidenceLobe(grid, ti);
         std::printf(

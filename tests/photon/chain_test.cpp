@@ -8,9 +8,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 std::shared_ptr<SplatSet> PlaneSplats(const std::string& body, uint64_t paths, double radius) {
     PhotonTraceSettings s;
     s.paths = paths;
@@ -36,7 +33,7 @@ TEST(Chain, LambertPlaneGivesKdOverPi) {
     for (double ti = 0; ti <= 70; ti += 10) {
         for (double to = 0; to <= 70; to += 10) {
             for (double po = 0; po < 360; po += 45) {
-                grid.EvalAngles(ti * kDeg, 0, to * kDeg, po * kDeg, f);
+                grid.EvalAngles(ti * kDegree, 0, to * kDegree, po * kDegree, f);
                 const double rel = f[0] / (kd / kPi) - 1;
                 sum += rel;
                 worst = std::max(worst, std::abs(rel));
@@ -49,7 +46,7 @@ TEST(Chain, LambertPlaneGivesKdOverPi) {
     EXPECT_LT(std::abs(sum / points), 0.01);
     EXPECT_LT(worst, 0.08);  // brdfsim's 5% bound is for 1M photons
     for (double ti : {0.0, 30.0, 60.0})
-        EXPECT_NEAR(Albedo(grid, DirectionFromAngles(ti * kDeg, 0), 32)[0], kd, 0.01 * kd);
+        EXPECT_NEAR(Albedo(grid, DirectionFromAngles(ti * kDegree, 0), 32)[0], kd, 0.01 * kd);
 }
 
 // Peak and width of the lobe in the plane of incidence against the analytic lobe smoothed by
@@ -65,12 +62,12 @@ TEST(Chain, PhongPlaneGivesTheAnalyticLobe) {
     const double peakFactor = std::sqrt(sigma2 / 2 / (sigma2 / 2 + s2) * sigma2 / (sigma2 + s2));
     const double predictedPeak = (n + 2) / (2 * kPi) * peakFactor;
     const double predictedFwhm =
-        2 * std::acos(std::pow(0.5, 1 / n)) / kDeg * std::sqrt((sigma2 + 2 * s2) / sigma2);
+        2 * std::acos(std::pow(0.5, 1 / n)) / kDegree * std::sqrt((sigma2 + 2 * s2) / sigma2);
     float f[3];
     for (double ti : {0.0, 30.0, 60.0}) {
         std::vector<double> xs, ys;
         for (double x = -89; x <= 89; x += 0.25) {
-            grid.EvalAngles(ti * kDeg, kPi, std::abs(x) * kDeg, x < 0 ? kPi : 0, f);
+            grid.EvalAngles(ti * kDegree, kPi, std::abs(x) * kDegree, x < 0 ? kPi : 0, f);
             xs.push_back(x);
             ys.push_back(f[0]);
         }

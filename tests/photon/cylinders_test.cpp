@@ -9,15 +9,13 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-
 void CheckCylinders(const std::string& rib, double thetaMinDeg, double thetaMaxDeg) {
     PhotonTraceSettings s;
     s.paths = 100000;
     s.isotropic = true;  // φ′ = 0: the light in the xz plane, across the cylinders
     s.maxDepth = 1;
-    s.thetaMin = float(thetaMinDeg * kDeg);
-    s.thetaMax = float(thetaMaxDeg * kDeg);
+    s.thetaMin = float(thetaMinDeg * kDegree);
+    s.thetaMax = float(thetaMaxDeg * kDegree);
     const auto r = test::TraceRib(rib, s);
     const test::BinGrid grid;
     const auto measured = test::Bin(

@@ -4,9 +4,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 constexpr double kZ999 = 3.09;  // standard normal quantile of a 0.1% tail
 
 // Pearson's χ² of photon counts in equal-probability bins.
@@ -46,8 +43,8 @@ void CheckPhongPlane(double thetaDeg) {
     PhotonTraceSettings s;
     s.paths = 100000;
     s.isotropic = true;
-    s.thetaMin = float((thetaDeg - 1) * kDeg);
-    s.thetaMax = float((thetaDeg + 1) * kDeg);
+    s.thetaMin = float((thetaDeg - 1) * kDegree);
+    s.thetaMax = float((thetaDeg + 1) * kDegree);
     const std::string body = "Surface \"metal\"\nAttribute \"brdflight\" \"float exponent\" 25\n";
     const auto r = test::TraceRib(test::World(body + test::Square(1)), s);
     const test::BinGrid grid;

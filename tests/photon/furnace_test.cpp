@@ -9,8 +9,6 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-
 double EnergyPerPath(const PhotonTraceResult& r, int component = 0) {
     return r.stats.energyUp[component] / static_cast<double>(r.stats.paths);
 }
@@ -80,8 +78,8 @@ double PhongPlaneAlbedo(double exponent, double thetaDeg) {
     PhotonTraceSettings s;
     s.paths = 100000;
     s.isotropic = true;
-    s.thetaMin = static_cast<float>((thetaDeg - 0.25) * kDeg);
-    s.thetaMax = static_cast<float>((thetaDeg + 0.25) * kDeg);
+    s.thetaMin = static_cast<float>((thetaDeg - 0.25) * kDegree);
+    s.thetaMax = static_cast<float>((thetaDeg + 0.25) * kDegree);
     const std::string body = "Surface \"metal\"\nAttribute \"brdflight\" \"float exponent\" " +
                              std::to_string(exponent) + "\n" + test::Square(1);
     return EnergyPerPath(test::TraceRib(test::World(body), s));
@@ -100,7 +98,7 @@ TEST(MicroBrdf, NormalisedPhongAlbedo) {
 // instead of evaluating cosⁿα again: it must agree with Evaluate at the drawn direction.
 TEST(MicroBrdf, SampledValueIsTheEvaluatedOne) {
     uint64_t state = 11;
-    auto next = [&] { return ToUnitFloat(Mix64(state += 0x9e3779b97f4a7c15ull)); };
+    auto next = [&] { return ToUnitFloat(MixBits(state += kSplitMix64Step)); };
     int specularDraws = 0;
     for (const MicroBrdf brdf : {MicroBrdf{0, 1, 25}, MicroBrdf{0.5f, 0.5f, 10},
                                  MicroBrdf{0.3f, 0.7f, 1}, MicroBrdf{0.2f, 0.8f, 200}}) {

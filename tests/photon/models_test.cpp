@@ -8,23 +8,21 @@
 namespace gonio {
 namespace {
 
-using test::kDeg;
-using test::kPi;
-
 // A set of directions: a θ band and a φ interval (degrees; the interval may wrap past 360).
 struct Cell {
     double theta0, theta1, phi0, phi1;
 
     bool Contains(double theta, double phi) const {
-        if (theta < theta0 * kDeg || theta >= theta1 * kDeg) return false;
-        double d = phi / kDeg - phi0;
+        if (theta < theta0 * kDegree || theta >= theta1 * kDegree) return false;
+        double d = phi / kDegree - phi0;
         d -= 360 * std::floor(d / 360);
         return d < phi1 - phi0;
     }
     // ∫ cos θ dω over the cell.
     double ProjectedSolidAngle() const {
-        return (phi1 - phi0) * kDeg *
-               (std::pow(std::sin(theta1 * kDeg), 2) - std::pow(std::sin(theta0 * kDeg), 2)) / 2;
+        return (phi1 - phi0) * kDegree *
+               (std::pow(std::sin(theta1 * kDegree), 2) - std::pow(std::sin(theta0 * kDegree), 2)) /
+               2;
     }
 };
 
@@ -34,8 +32,8 @@ PhotonTraceSettings IncidenceBand(double thetaMinDeg, double thetaMaxDeg, uint64
     s.paths = paths;
     s.isotropic = true;
     s.averageAzimuth = averageAzimuth;
-    s.thetaMin = float(thetaMinDeg * kDeg);
-    s.thetaMax = float(thetaMaxDeg * kDeg);
+    s.thetaMin = float(thetaMinDeg * kDegree);
+    s.thetaMax = float(thetaMaxDeg * kDegree);
     return s;
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "base/math.h"
 #include "photon/photon_tracer.h"
 #include "photon_map.h"
 #include "render/ray_scene.h"
@@ -18,9 +19,6 @@
 #include "scene/scene_builder.h"
 
 namespace gonio::test {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
 
 inline std::string ReadRib(const std::string& name) {
     std::ifstream in(std::string(GONIO_RIBS_DIR) + "/" + name);

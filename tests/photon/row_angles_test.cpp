@@ -5,10 +5,10 @@
 
 #include <cmath>
 
+#include "base/math.h"
+
 namespace gonio {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A few float ulps of angles up to π; libm's own acosf and atan2f are off by up to 2.5e-7.
 constexpr double kTolerance = 5e-7;

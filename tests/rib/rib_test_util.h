@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include "base/diagnostics.h"
 #include "recording_target.h"
-#include "rib/diagnostics.h"
 #include "rib/rib_parser.h"
 
 namespace gonio {

@@ -1,6 +1,6 @@
-// Search paths (rib/search_path.h): '&' and '@' expansion, and finding a file on the path.
+// Search paths (base/search_path.h): '&' and '@' expansion, and finding a file on the path.
 
-#include "rib/search_path.h"
+#include "base/search_path.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 #include "shaderlang/shading_system.h"
 #include "shaderlang/simple_context.h"
 

@@ -1,13 +1,13 @@
 // Math built-ins: analytic values under every uniform/varying combination, masks respected.
 
+#include "base/math.h"
+
 #include <cmath>
 
 #include "builtin_test_util.h"
 
 namespace gonio::sl::testing {
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 using Values = std::vector<std::vector<float>>;
 
@@ -31,9 +31,9 @@ TEST(MathBuiltins, TrigonometryAndPowers) {
     ExpectAllVariants("atan", "f", "f", {x}, Unary([](float v) { return std::atan(v); }));
     ExpectAllVariants("exp", "f", "f", {x}, Unary([](float v) { return std::exp(v); }));
     ExpectAllVariants("radians", "f", "f", {Floats({180, 90, -45, 0, 360})},
-                      Unary([](float v) { return v * kPi / 180.0f; }));
-    ExpectAllVariants("degrees", "f", "f", {Floats({kPi, kPi / 2, -1, 0, 2})},
-                      Unary([](float v) { return v * 180.0f / kPi; }), 1e-4f);
+                      Unary([](float v) { return v * kPiF / 180.0f; }));
+    ExpectAllVariants("degrees", "f", "f", {Floats({kPiF, kPiF / 2, -1, 0, 2})},
+                      Unary([](float v) { return v * 180.0f / kPiF; }), 1e-4f);
     const Values positive = Floats({0.25f, 4.0f, 9.0f, 2.0f, 100.0f});
     ExpectAllVariants("sqrt", "f", "f", {positive}, Unary([](float v) { return std::sqrt(v); }));
     ExpectAllVariants("inversesqrt", "f", "f", {positive},
@@ -55,7 +55,7 @@ TEST(MathBuiltins, KnownValues) {
     TestCall call(1);
     call.Float(1.0f).Result(TypeFromCode("f"), false);
     call.Run(FindKernel("asin", "f", "f"));
-    EXPECT_NEAR(call.R(0), kPi / 2, 1e-6f);
+    EXPECT_NEAR(call.R(0), kPiF / 2, 1e-6f);
     // Out-of-range arguments are clamped rather than giving NaN.
     TestCall acos(1);
     acos.Float(1.0000001f).Result(TypeFromCode("f"), false);

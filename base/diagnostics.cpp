@@ -1,4 +1,4 @@
-#include "rib/diagnostics.h"
+#include "base/diagnostics.h"
 
 namespace gonio {
 

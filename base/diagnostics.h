@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "rib/file_loc.h"
+#include "base/file_loc.h"
 
 namespace gonio {
 

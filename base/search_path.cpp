@@ -1,4 +1,4 @@
-#include "rib/search_path.h"
+#include "base/search_path.h"
 
 #include <filesystem>
 #include <system_error>

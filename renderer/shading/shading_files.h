@@ -1,0 +1,16 @@
+#pragma once
+// The files shaders read by name during one render, each opened once for all threads:
+// textures (OpenImageIO's cache) and measured BRDFs (.grd files for brdf()). The renderer owns
+// one per render, so that a file rewritten between renders is read again.
+
+#include "brdfsim/grd_cache.h"
+#include "image/texture_lookup.h"
+
+namespace gonio {
+
+struct ShadingFiles {
+    TextureLookup textures;  // thread-safe
+    GrdCache brdfs;          // thread-safe
+};
+
+}  // namespace gonio
