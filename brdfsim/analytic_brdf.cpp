@@ -1,4 +1,4 @@
-#include "analytic_brdf.h"
+#include "brdfsim/analytic_brdf.h"
 
 #include <cmath>
 #include <sstream>

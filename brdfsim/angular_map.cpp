@@ -1,4 +1,4 @@
-#include "angular_map.h"
+#include "brdfsim/angular_map.h"
 
 #include <OpenImageIO/imageio.h>
 #include <tbb/parallel_for.h>

@@ -1,4 +1,4 @@
-#include "baked_table.h"
+#include "brdfsim/baked_table.h"
 
 #include <tbb/parallel_for.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "base/math.h"
-#include "splat_set.h"
+#include "brdfsim/splat_set.h"
 
 namespace gonio {
 

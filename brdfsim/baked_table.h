@@ -6,8 +6,8 @@
 #include <array>
 #include <vector>
 
-#include "brdf.h"
-#include "cell_lists.h"
+#include "brdfsim/brdf.h"
+#include "brdfsim/cell_lists.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "brdf.h"
+#include "brdfsim/brdf.h"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "brdf_adaptive.h"
+#include "brdfsim/brdf_adaptive.h"
 
 #include <algorithm>
 #include <cmath>

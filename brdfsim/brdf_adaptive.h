@@ -6,8 +6,8 @@
 
 #include <memory>
 
-#include "brdf.h"
-#include "splat_set.h"
+#include "brdfsim/brdf.h"
+#include "brdfsim/splat_set.h"
 
 namespace gonio {
 

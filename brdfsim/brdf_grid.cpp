@@ -1,4 +1,4 @@
-#include "brdf_grid.h"
+#include "brdfsim/brdf_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,11 +7,11 @@
 
 #include <memory>
 
-#include "brdf.h"
-#include "cell_lists.h"
-#include "hemisphere_grid.h"
-#include "splat_set.h"
-#include "splat_tree.h"
+#include "brdfsim/brdf.h"
+#include "brdfsim/cell_lists.h"
+#include "brdfsim/hemisphere_grid.h"
+#include "brdfsim/splat_set.h"
+#include "brdfsim/splat_tree.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "brdf_report.h"
+#include "brdfsim/brdf_report.h"
 
 #include <algorithm>
 #include <cmath>

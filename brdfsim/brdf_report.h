@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "brdf.h"
-#include "grd_file.h"
+#include "brdfsim/brdf.h"
+#include "brdfsim/grd_file.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "brdf_simple.h"
+#include "brdfsim/brdf_simple.h"
 
 #include <vector>
 

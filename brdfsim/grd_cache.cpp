@@ -1,4 +1,4 @@
-#include "grd_cache.h"
+#include "brdfsim/grd_cache.h"
 
 namespace gonio {
 

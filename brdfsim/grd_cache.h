@@ -9,7 +9,7 @@
 #include <mutex>
 #include <string>
 
-#include "grd_file.h"
+#include "brdfsim/grd_file.h"
 
 namespace gonio {
 

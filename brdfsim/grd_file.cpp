@@ -1,4 +1,4 @@
-#include "grd_file.h"
+#include "brdfsim/grd_file.h"
 
 #include <unistd.h>
 

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "baked_table.h"
-#include "brdf_grid.h"
+#include "brdfsim/baked_table.h"
+#include "brdfsim/brdf_grid.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "hemisphere_grid.h"
+#include "brdfsim/hemisphere_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "kernel.h"
+#include "brdfsim/kernel.h"
 
 #include <algorithm>
 #include <array>

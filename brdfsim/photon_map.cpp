@@ -1,4 +1,4 @@
-#include "photon_map.h"
+#include "brdfsim/photon_map.h"
 
 #include <tbb/parallel_for.h>
 #include <unistd.h>

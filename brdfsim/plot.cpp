@@ -1,12 +1,12 @@
-#include "plot.h"
+#include "brdfsim/plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "raster_plot.h"
-#include "svg_plot.h"
+#include "brdfsim/raster_plot.h"
+#include "brdfsim/svg_plot.h"
 
 namespace gonio {
 

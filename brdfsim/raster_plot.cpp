@@ -1,4 +1,4 @@
-#include "raster_plot.h"
+#include "brdfsim/raster_plot.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>

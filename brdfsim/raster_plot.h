@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "plot.h"
+#include "brdfsim/plot.h"
 
 namespace gonio {
 

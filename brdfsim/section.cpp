@@ -1,4 +1,4 @@
-#include "section.h"
+#include "brdfsim/section.h"
 
 #include <tbb/parallel_for.h>
 

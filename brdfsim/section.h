@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "brdf.h"
+#include "brdfsim/brdf.h"
 
 namespace gonio {
 

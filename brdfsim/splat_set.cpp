@@ -1,10 +1,10 @@
-#include "splat_set.h"
+#include "brdfsim/splat_set.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "base/math.h"
-#include "hemisphere_grid.h"
+#include "brdfsim/hemisphere_grid.h"
 
 namespace gonio {
 

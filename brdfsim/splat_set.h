@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "base/math.h"
-#include "kernel.h"
-#include "photon_map.h"
+#include "brdfsim/kernel.h"
+#include "brdfsim/photon_map.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "splat_tree.h"
+#include "brdfsim/splat_tree.h"
 
 #include <tbb/parallel_invoke.h>
 

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "splat_set.h"
+#include "brdfsim/splat_set.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "svg_plot.h"
+#include "brdfsim/svg_plot.h"
 
 #include <unistd.h>
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "plot.h"
+#include "brdfsim/plot.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "synth.h"
+#include "brdfsim/synth.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>

@@ -12,8 +12,8 @@
 #include <functional>
 #include <string>
 
-#include "analytic_brdf.h"
-#include "photon_map.h"
+#include "brdfsim/analytic_brdf.h"
+#include "brdfsim/photon_map.h"
 
 namespace gonio {
 

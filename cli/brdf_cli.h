@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "brdf.h"
-#include "grd_file.h"
-#include "kernel.h"
+#include "brdfsim/brdf.h"
+#include "brdfsim/grd_file.h"
+#include "brdfsim/kernel.h"
 
 namespace gonio::brdfcli {
 

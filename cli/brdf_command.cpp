@@ -6,13 +6,13 @@
 #include <memory>
 
 #include "base/math.h"
-#include "brdf_adaptive.h"
 #include "brdf_cli.h"
-#include "brdf_grid.h"
-#include "brdf_report.h"
-#include "brdf_simple.h"
+#include "brdfsim/brdf_adaptive.h"
+#include "brdfsim/brdf_grid.h"
+#include "brdfsim/brdf_report.h"
+#include "brdfsim/brdf_simple.h"
+#include "brdfsim/photon_map.h"
 #include "commands.h"
-#include "photon_map.h"
 
 namespace gonio {
 

@@ -4,13 +4,13 @@
 #include <cstdio>
 #include <memory>
 
-#include "analytic_brdf.h"
-#include "baked_table.h"
 #include "brdf_cli.h"
-#include "brdf_grid.h"
-#include "grd_file.h"
-#include "photon_map.h"
-#include "synth.h"
+#include "brdfsim/analytic_brdf.h"
+#include "brdfsim/baked_table.h"
+#include "brdfsim/brdf_grid.h"
+#include "brdfsim/grd_file.h"
+#include "brdfsim/photon_map.h"
+#include "brdfsim/synth.h"
 
 namespace gonio::brdfcli {
 

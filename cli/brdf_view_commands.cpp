@@ -4,13 +4,13 @@
 #include <cstdio>
 #include <memory>
 
-#include "analytic_brdf.h"
-#include "angular_map.h"
 #include "base/math.h"
 #include "brdf_cli.h"
-#include "brdf_report.h"
-#include "plot.h"
-#include "section.h"
+#include "brdfsim/analytic_brdf.h"
+#include "brdfsim/angular_map.h"
+#include "brdfsim/brdf_report.h"
+#include "brdfsim/plot.h"
+#include "brdfsim/section.h"
 
 namespace gonio::brdfcli {
 

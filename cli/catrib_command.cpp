@@ -12,8 +12,8 @@
 
 #include "base/diagnostics.h"
 #include "commands.h"
-#include "rib/rib_parser.h"
-#include "rib/rib_writer.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/rib/rib_writer.h"
 
 namespace gonio {
 namespace {

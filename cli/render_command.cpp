@@ -7,10 +7,10 @@
 #include <memory>
 
 #include "commands.h"
-#include "photon/photon_frame.h"
-#include "render/frame_renderer.h"
-#include "rib/rib_parser.h"
-#include "scene/scene_builder.h"
+#include "renderer/frame/frame_renderer.h"
+#include "renderer/photon/photon_frame.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace gonio {
 namespace {

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "commands.h"
-#include "image/image_writer.h"
+#include "renderer/image/image_writer.h"
 #include "shaderlang/shading_system.h"
 #include "shaderlang/simple_context.h"
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "base/diagnostics.h"
-#include "rib/rib_parser.h"
-#include "rib/rib_writer.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/rib/rib_writer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

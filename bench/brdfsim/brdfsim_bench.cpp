@@ -11,12 +11,12 @@
 #include <random>
 #include <string>
 
-#include "baked_table.h"
-#include "brdf_grid.h"
-#include "brdf_report.h"
-#include "brdf_simple.h"
-#include "photon_map.h"
-#include "synth.h"
+#include "brdfsim/baked_table.h"
+#include "brdfsim/brdf_grid.h"
+#include "brdfsim/brdf_report.h"
+#include "brdfsim/brdf_simple.h"
+#include "brdfsim/photon_map.h"
+#include "brdfsim/synth.h"
 
 namespace gonio {
 namespace {

@@ -25,12 +25,12 @@
 #include <memory>
 #include <vector>
 
-#include "photon/micro_brdf.h"
-#include "photon/photon_tracer.h"
-#include "render/random.h"
-#include "render/ray_scene.h"
-#include "rib/rib_parser.h"
-#include "scene/scene_builder.h"
+#include "base/random.h"
+#include "renderer/photon/micro_brdf.h"
+#include "renderer/photon/photon_tracer.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace gonio {
 namespace {

@@ -22,9 +22,9 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/quadrics.h"
-#include "render/camera.h"
-#include "render/ray_scene.h"
+#include "renderer/geometry/quadrics.h"
+#include "renderer/raytrace/camera.h"
+#include "renderer/raytrace/ray_scene.h"
 
 namespace gonio {
 namespace {

@@ -1,4 +1,4 @@
-#include "geometry/basis.h"
+#include "renderer/geometry/basis.h"
 
 namespace gonio {
 

@@ -1,8 +1,8 @@
-#include "geometry/curves.h"
+#include "renderer/geometry/curves.h"
 
 #include <array>
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 namespace {

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "geometry/basis.h"
-#include "geometry/geometry_result.h"
-#include "geometry/shape.h"
+#include "renderer/geometry/basis.h"
+#include "renderer/geometry/geometry_result.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio {
 

@@ -1,9 +1,9 @@
-#include "geometry/nurbs.h"
+#include "renderer/geometry/nurbs.h"
 
 #include <algorithm>
 #include <string>
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 

@@ -1,8 +1,8 @@
-#include "geometry/patches.h"
+#include "renderer/geometry/patches.h"
 
 #include <cmath>
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 namespace {

@@ -18,10 +18,10 @@
 
 #include <string>
 
-#include "geometry/basis.h"
-#include "geometry/geometry_result.h"
-#include "geometry/shape.h"
-#include "geometry/tensor_grid.h"
+#include "renderer/geometry/basis.h"
+#include "renderer/geometry/geometry_result.h"
+#include "renderer/geometry/shape.h"
+#include "renderer/geometry/tensor_grid.h"
 
 namespace gonio {
 

@@ -1,6 +1,6 @@
-#include "geometry/points.h"
+#include "renderer/geometry/points.h"
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 

@@ -2,8 +2,8 @@
 // RISpec §5.5 Points: one disc (or sphere) per "P", of diameter "width" (varying, one per
 // point) or "constantwidth", 1 when neither is given.
 
-#include "geometry/geometry_result.h"
-#include "geometry/shape.h"
+#include "renderer/geometry/geometry_result.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio {
 

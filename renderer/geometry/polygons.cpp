@@ -1,11 +1,11 @@
-#include "geometry/polygons.h"
+#include "renderer/geometry/polygons.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <string>
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 namespace {

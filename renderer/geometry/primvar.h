@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/declarations.h"
+#include "renderer/rib/declarations.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 

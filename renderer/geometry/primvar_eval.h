@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/shape.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio {
 

@@ -1,10 +1,10 @@
-#include "geometry/quadric_revolved.h"
+#include "renderer/geometry/quadric_revolved.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "geometry/quadric_roots.h"
+#include "renderer/geometry/quadric_roots.h"
 
 namespace gonio::quadric {
 

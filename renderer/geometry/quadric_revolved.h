@@ -9,9 +9,9 @@
 
 #include <vector>
 
-#include "geometry/quadric_angles.h"
-#include "geometry/quadric_roots.h"
-#include "geometry/shape.h"
+#include "renderer/geometry/quadric_angles.h"
+#include "renderer/geometry/quadric_roots.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio::quadric {
 

@@ -1,4 +1,4 @@
-#include "geometry/quadric_roots.h"
+#include "renderer/geometry/quadric_roots.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/quadric_revolved.h"
-#include "geometry/quadric_roots.h"
-#include "geometry/quadrics.h"
+#include "renderer/geometry/quadric_revolved.h"
+#include "renderer/geometry/quadric_roots.h"
+#include "renderer/geometry/quadrics.h"
 
 namespace gonio {
 namespace quadric {

@@ -1,13 +1,13 @@
 // Sphere, the swept lines (cylinder, cone, disk, hyperboloid) and the paraboloid: the quadrics
 // whose implicit equation is quadratic. The torus is in quadric_torus.cpp.
-#include "geometry/quadrics.h"
+#include "renderer/geometry/quadrics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
-#include "geometry/quadric_revolved.h"
-#include "geometry/quadric_roots.h"
+#include "renderer/geometry/quadric_revolved.h"
+#include "renderer/geometry/quadric_roots.h"
 
 namespace gonio {
 namespace quadric {

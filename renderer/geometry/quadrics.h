@@ -33,7 +33,7 @@
 
 #include <memory>
 
-#include "geometry/shape.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio {
 

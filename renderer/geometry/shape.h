@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/primvar.h"
+#include "renderer/geometry/primvar.h"
 
 namespace gonio {
 

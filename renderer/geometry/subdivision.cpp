@@ -1,6 +1,6 @@
-#include "geometry/subdivision.h"
+#include "renderer/geometry/subdivision.h"
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 namespace {

@@ -1,9 +1,9 @@
-#include "geometry/tensor_grid.h"
+#include "renderer/geometry/tensor_grid.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/primvar_eval.h"
+#include "renderer/geometry/primvar_eval.h"
 
 namespace gonio {
 

@@ -15,8 +15,8 @@
 
 #include <vector>
 
-#include "geometry/geometry_result.h"
-#include "geometry/shape.h"
+#include "renderer/geometry/geometry_result.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio {
 

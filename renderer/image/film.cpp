@@ -1,4 +1,4 @@
-#include "image/film.h"
+#include "renderer/image/film.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

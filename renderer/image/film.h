@@ -19,7 +19,7 @@
 
 #include <vector>
 
-#include "image/pixel_filter.h"
+#include "renderer/image/pixel_filter.h"
 
 namespace gonio {
 

@@ -1,5 +1,5 @@
 // The one file of the renderer that includes OpenImageIO (STYLE.md habit 3).
-#include "image/image_writer.h"
+#include "renderer/image/image_writer.h"
 
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>

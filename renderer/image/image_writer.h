@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "base/diagnostics.h"
-#include "image/film.h"
-#include "rib/param_list.h"
+#include "renderer/image/film.h"
+#include "renderer/rib/param_list.h"
 
 namespace gonio {
 

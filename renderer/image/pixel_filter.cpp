@@ -1,4 +1,4 @@
-#include "image/pixel_filter.h"
+#include "renderer/image/pixel_filter.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 // The second OpenImageIO user beside image_writer.cpp: texture reads go through its
 // TextureSystem, which does mipmapping, filtering and caching better than we would.
 
-#include "image/texture_lookup.h"
+#include "renderer/image/texture_lookup.h"
 
 #include <Imath/ImathVec.h>
 #include <OpenImageIO/texture.h>

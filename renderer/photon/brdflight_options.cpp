@@ -1,4 +1,4 @@
-#include "photon/brdflight_options.h"
+#include "renderer/photon/brdflight_options.h"
 
 #include <filesystem>
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "base/diagnostics.h"
-#include "scene/frame.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "photon/micro_brdf.h"
+#include "renderer/photon/micro_brdf.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <Imath/ImathVec.h>
 
 #include "base/diagnostics.h"
-#include "scene/attributes.h"
+#include "renderer/scene/attributes.h"
 
 namespace gonio {
 

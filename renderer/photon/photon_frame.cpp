@@ -1,4 +1,4 @@
-#include "photon/photon_frame.h"
+#include "renderer/photon/photon_frame.h"
 
 #include <unistd.h>
 
@@ -8,8 +8,8 @@
 #include <cstring>
 
 #include "base/math.h"
-#include "photon_map.h"
-#include "render/ray_scene.h"
+#include "brdfsim/photon_map.h"
+#include "renderer/raytrace/ray_scene.h"
 
 namespace gonio {
 namespace {

@@ -2,9 +2,11 @@
 // `gonio render` of a frame with Option "BRDFLight": trace the photons, write the photon map
 // (temporary name, then rename) and print a summary instead of rendering an image.
 
-#include "photon/brdflight_options.h"
-#include "photon/photon_tracer.h"
-#include "render/frame_renderer.h"
+#include "base/diagnostics.h"
+#include "renderer/photon/brdflight_options.h"
+#include "renderer/photon/photon_tracer.h"
+#include "renderer/scene/frame.h"
+#include "renderer/scene/render_settings.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "photon/photon_tracer.h"
+#include "renderer/photon/photon_tracer.h"
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -10,10 +10,10 @@
 #include <limits>
 
 #include "base/math.h"
-#include "photon/row_angles.h"
-#include "photon/scene_bounds.h"
-#include "render/progress.h"
-#include "render/random.h"
+#include "base/progress.h"
+#include "base/random.h"
+#include "renderer/photon/row_angles.h"
+#include "renderer/photon/scene_bounds.h"
 
 namespace gonio {
 namespace {

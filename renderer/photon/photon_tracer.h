@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "base/math.h"
-#include "photon/micro_brdf.h"
-#include "render/ray_scene.h"
-#include "scene/frame.h"
+#include "renderer/photon/micro_brdf.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

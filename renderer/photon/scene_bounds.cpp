@@ -1,4 +1,4 @@
-#include "photon/scene_bounds.h"
+#include "renderer/photon/scene_bounds.h"
 
 namespace gonio {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <Imath/ImathBox.h>
 
-#include "scene/frame.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

@@ -1,7 +1,7 @@
 // Parameter declarations (RISpec §3): the predeclared standard names, `Declare`, and inline
 // declarations such as "facevarying float[2] st".
 
-#include "rib/declarations.h"
+#include "renderer/rib/declarations.h"
 
 #include <sstream>
 #include <vector>

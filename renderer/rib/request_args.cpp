@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "rib/request_table.h"
+#include "renderer/rib/request_table.h"
 
 namespace gonio {
 namespace {

@@ -1,7 +1,7 @@
 // The request table: every RIB request the parser knows, with its positional-argument signature
 // (see request_table.h) and the RiTarget call it makes. Adding a request touches one row.
 
-#include "rib/request_table.h"
+#include "renderer/rib/request_table.h"
 
 #include <cmath>
 #include <unordered_map>

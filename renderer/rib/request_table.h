@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "base/file_loc.h"
-#include "rib/param_list.h"
-#include "rib/request_values.h"
-#include "rib/ri_target.h"
+#include "renderer/rib/param_list.h"
+#include "renderer/rib/request_values.h"
+#include "renderer/rib/ri_target.h"
 
 namespace gonio {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "base/file_loc.h"
-#include "rib/param_list.h"
+#include "renderer/rib/param_list.h"
 
 namespace gonio {
 

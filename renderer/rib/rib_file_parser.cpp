@@ -1,14 +1,14 @@
 // The per-input parsing state: values of the current request, strings and numbers from the
 // lexer, and the dispatch of each finished request through the request table.
 
-#include "rib/rib_file_parser.h"
+#include "renderer/rib/rib_file_parser.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 
-#include "rib/rib_session.h"
+#include "renderer/rib/rib_session.h"
 #include "rib_grammar.hpp"
 
 namespace gonio {

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "base/file_loc.h"
-#include "rib/request_table.h"
-#include "rib/request_values.h"
+#include "renderer/rib/request_table.h"
+#include "renderer/rib/request_values.h"
 
 namespace gonio {
 

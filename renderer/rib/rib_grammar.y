@@ -23,7 +23,7 @@ typedef void* yyscan_t;
 }
 
 %code {
-#include "rib/rib_file_parser.h"
+#include "renderer/rib/rib_file_parser.h"
 
 int riblex(RIBSTYPE* value, RIBLTYPE* location, yyscan_t scanner);
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "base/diagnostics.h"
-#include "rib/ri_target.h"
+#include "renderer/rib/ri_target.h"
 
 namespace gonio {
 

@@ -1,7 +1,7 @@
 // Opening RIB inputs (files, gzip files, standard input, strings), following ReadArchive with
 // its search path and cycle check, and the error budget of one parse.
 
-#include "rib/rib_session.h"
+#include "renderer/rib/rib_session.h"
 
 #include <unistd.h>
 #include <zlib.h>
@@ -12,8 +12,8 @@
 #include <memory>
 
 #include "base/search_path.h"
-#include "rib/rib_file_parser.h"
-#include "rib/rib_parser.h"
+#include "renderer/rib/rib_file_parser.h"
+#include "renderer/rib/rib_parser.h"
 
 namespace gonio {
 namespace {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "base/diagnostics.h"
-#include "rib/request_table.h"
-#include "rib/ri_target.h"
+#include "renderer/rib/request_table.h"
+#include "renderer/rib/ri_target.h"
 
 namespace gonio {
 

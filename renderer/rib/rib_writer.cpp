@@ -1,6 +1,6 @@
 // Printing RiTarget calls back as RIB.
 
-#include "rib/rib_writer.h"
+#include "renderer/rib/rib_writer.h"
 
 #include <charconv>
 #include <cmath>

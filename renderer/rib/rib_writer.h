@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rib/ri_target.h"
+#include "renderer/rib/ri_target.h"
 
 namespace gonio {
 

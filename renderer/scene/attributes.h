@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "base/file_loc.h"
-#include "geometry/basis.h"
-#include "rib/param_list.h"
+#include "renderer/geometry/basis.h"
+#include "renderer/rib/param_list.h"
 
 namespace gonio {
 

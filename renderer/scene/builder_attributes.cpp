@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "base/math.h"
-#include "scene/scene_builder_state.h"
-#include "scene/standard_options.h"
+#include "renderer/scene/scene_builder_state.h"
+#include "renderer/scene/standard_options.h"
 
 namespace gonio {
 namespace {

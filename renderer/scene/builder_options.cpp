@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/scene_builder_state.h"
-#include "scene/standard_options.h"
+#include "renderer/scene/scene_builder_state.h"
+#include "renderer/scene/standard_options.h"
 
 namespace gonio {
 

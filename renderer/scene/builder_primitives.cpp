@@ -3,15 +3,15 @@
 
 #include <Imath/ImathMatrixAlgo.h>
 
-#include "geometry/curves.h"
-#include "geometry/nurbs.h"
-#include "geometry/patches.h"
-#include "geometry/points.h"
-#include "geometry/polygons.h"
-#include "geometry/primvar_eval.h"
-#include "geometry/quadrics.h"
-#include "geometry/subdivision.h"
-#include "scene/scene_builder_state.h"
+#include "renderer/geometry/curves.h"
+#include "renderer/geometry/nurbs.h"
+#include "renderer/geometry/patches.h"
+#include "renderer/geometry/points.h"
+#include "renderer/geometry/polygons.h"
+#include "renderer/geometry/primvar_eval.h"
+#include "renderer/geometry/quadrics.h"
+#include "renderer/geometry/subdivision.h"
+#include "renderer/scene/scene_builder_state.h"
 
 namespace gonio {
 

@@ -11,9 +11,9 @@
 #include <variant>
 #include <vector>
 
-#include "geometry/shape.h"
-#include "scene/attributes.h"
-#include "scene/options.h"
+#include "renderer/geometry/shape.h"
+#include "renderer/scene/attributes.h"
+#include "renderer/scene/options.h"
 
 namespace gonio {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "base/file_loc.h"
-#include "rib/param_list.h"
-#include "scene/attributes.h"
+#include "renderer/rib/param_list.h"
+#include "renderer/scene/attributes.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "scene/primvar_typing.h"
+#include "renderer/scene/primvar_typing.h"
 
 namespace gonio {
 bool TypeParam(const Param& param, const Declarations& declarations, int colorComponents,

@@ -4,9 +4,9 @@
 #include <string>
 
 #include "base/diagnostics.h"
-#include "geometry/primvar.h"
-#include "rib/declarations.h"
-#include "rib/param_list.h"
+#include "renderer/geometry/primvar.h"
+#include "renderer/rib/declarations.h"
+#include "renderer/rib/param_list.h"
 
 namespace gonio {
 

@@ -1,6 +1,6 @@
-#include "scene/scene_builder.h"
+#include "renderer/scene/scene_builder.h"
 
-#include "scene/scene_builder_state.h"
+#include "renderer/scene/scene_builder_state.h"
 
 namespace gonio {
 namespace {

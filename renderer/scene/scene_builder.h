@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "base/diagnostics.h"
-#include "geometry/geometry_result.h"
-#include "rib/declarations.h"
-#include "rib/ri_target.h"
-#include "scene/frame.h"
+#include "renderer/geometry/geometry_result.h"
+#include "renderer/rib/declarations.h"
+#include "renderer/rib/ri_target.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

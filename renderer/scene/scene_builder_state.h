@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/primvar_typing.h"
-#include "scene/scene_builder.h"
+#include "renderer/scene/primvar_typing.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace gonio {
 

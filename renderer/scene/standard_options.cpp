@@ -1,4 +1,4 @@
-#include "scene/standard_options.h"
+#include "renderer/scene/standard_options.h"
 
 namespace gonio {
 namespace {

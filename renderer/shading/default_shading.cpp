@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "shading/surface_shading.h"
+#include "renderer/shading/surface_shading.h"
 
 namespace gonio {
 namespace {

@@ -1,10 +1,10 @@
-#include "shading/frame_shaders.h"
+#include "renderer/shading/frame_shaders.h"
 
 #include <filesystem>
 #include <sstream>
 
 #include "base/search_path.h"
-#include "shading/rib_shader_parameters.h"
+#include "renderer/shading/rib_shader_parameters.h"
 
 namespace gonio {
 namespace {

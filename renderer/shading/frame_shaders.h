@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "base/diagnostics.h"
-#include "render/camera.h"
-#include "scene/frame.h"
+#include "renderer/raytrace/camera.h"
+#include "renderer/scene/frame.h"
+#include "renderer/shading/shader_needs.h"
 #include "shaderlang/shading_system.h"
-#include "shading/shader_needs.h"
 
 namespace gonio {
 

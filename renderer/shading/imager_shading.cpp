@@ -1,4 +1,4 @@
-#include "shading/imager_shading.h"
+#include "renderer/shading/imager_shading.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "renderer/shading/frame_shaders.h"
+#include "renderer/shading/named_textures.h"
 #include "shaderlang/shading_context.h"
 #include "shaderlang/shading_system.h"
-#include "shading/frame_shaders.h"
-#include "shading/named_textures.h"
 
 namespace gonio {
 namespace {

@@ -8,8 +8,8 @@
 #include <cstdint>
 
 #include "base/diagnostics.h"
-#include "image/film.h"
-#include "scene/frame.h"
+#include "renderer/image/film.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

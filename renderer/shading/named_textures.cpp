@@ -1,4 +1,4 @@
-#include "shading/named_textures.h"
+#include "renderer/shading/named_textures.h"
 
 #include <algorithm>
 #include <memory>

@@ -8,8 +8,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "renderer/shading/shading_files.h"
 #include "shaderlang/shading_context.h"
-#include "shading/shading_files.h"
 
 namespace gonio {
 

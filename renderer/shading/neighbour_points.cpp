@@ -1,4 +1,4 @@
-#include "shading/neighbour_points.h"
+#include "renderer/shading/neighbour_points.h"
 
 #include <cmath>
 #include <limits>

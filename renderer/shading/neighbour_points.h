@@ -6,8 +6,8 @@
 
 #include <Imath/ImathVec.h>
 
-#include "render/ray_scene.h"
-#include "render/surface_point.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/raytrace/surface_point.h"
 
 namespace gonio {
 

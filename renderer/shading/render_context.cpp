@@ -1,11 +1,11 @@
-#include "shading/render_context.h"
+#include "renderer/shading/render_context.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "shading/shading_files.h"
+#include "renderer/shading/shading_files.h"
 
 namespace gonio {
 namespace {

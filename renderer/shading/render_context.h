@@ -8,12 +8,12 @@
 #include <unordered_map>
 #include <vector>
 
-#include "render/ray_scene.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/shading/frame_shaders.h"
+#include "renderer/shading/named_textures.h"
+#include "renderer/shading/surface_shading.h"
 #include "shaderlang/message_passing.h"
 #include "shaderlang/shading_context.h"
-#include "shading/frame_shaders.h"
-#include "shading/named_textures.h"
-#include "shading/surface_shading.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "shading/rib_shader_parameters.h"
+#include "renderer/shading/rib_shader_parameters.h"
 
 #include <optional>
 #include <string>

@@ -5,8 +5,8 @@
 #include <Imath/ImathMatrix.h>
 
 #include "base/diagnostics.h"
-#include "rib/declarations.h"
-#include "rib/param_list.h"
+#include "renderer/rib/declarations.h"
+#include "renderer/rib/param_list.h"
 #include "shaderlang/shading_system.h"
 
 namespace gonio {

@@ -1,4 +1,4 @@
-#include "shading/shader_needs.h"
+#include "renderer/shading/shader_needs.h"
 
 #include <algorithm>
 #include <string>

@@ -3,7 +3,7 @@
 // derivatives, and the ray tracer for trace(), read off their compiled code once per frame; and
 // the options that bound trace().
 
-#include "scene/frame.h"
+#include "renderer/scene/frame.h"
 #include "shaderlang/shading_system.h"
 
 namespace gonio {

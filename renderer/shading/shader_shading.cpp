@@ -9,13 +9,13 @@
 #include <limits>
 #include <unordered_map>
 
-#include "render/camera.h"
-#include "render/ray_scene.h"
-#include "shading/frame_shaders.h"
-#include "shading/neighbour_points.h"
-#include "shading/render_context.h"
-#include "shading/shading_files.h"
-#include "shading/surface_shading.h"
+#include "renderer/raytrace/camera.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/shading/frame_shaders.h"
+#include "renderer/shading/neighbour_points.h"
+#include "renderer/shading/render_context.h"
+#include "renderer/shading/shading_files.h"
+#include "renderer/shading/surface_shading.h"
 
 namespace gonio {
 namespace {

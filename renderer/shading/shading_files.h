@@ -4,7 +4,7 @@
 // one per render, so that a file rewritten between renders is read again.
 
 #include "brdfsim/grd_cache.h"
-#include "image/texture_lookup.h"
+#include "renderer/image/texture_lookup.h"
 
 namespace gonio {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "render/surface_point.h"
+#include "renderer/raytrace/surface_point.h"
 
 namespace gonio {
 

@@ -1,6 +1,6 @@
 // GrdCache: one load per file shared by every caller and thread, and a remembered error for a
 // file that cannot be used.
-#include "grd_cache.h"
+#include "brdfsim/grd_cache.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // .grd files: bit-exact round trips, the baked table, and clear rejection of truncated, corrupt
 // and foreign files.
-#include "grd_file.h"
+#include "brdfsim/grd_file.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <iterator>
 
-#include "baked_table.h"
+#include "brdfsim/baked_table.h"
 #include "test_util.h"
 
 namespace gonio {

@@ -4,10 +4,10 @@
 
 #include <random>
 
-#include "brdf_grid.h"
-#include "brdf_report.h"
-#include "brdf_simple.h"
-#include "hemisphere_grid.h"
+#include "brdfsim/brdf_grid.h"
+#include "brdfsim/brdf_report.h"
+#include "brdfsim/brdf_simple.h"
+#include "brdfsim/hemisphere_grid.h"
 #include "test_util.h"
 
 namespace gonio {

@@ -1,6 +1,6 @@
 // The kernel and its normalisation: the flat integrals against the thesis's closed forms, the
 // sphere integrals against an independent Monte Carlo estimate, and the in-domain masses.
-#include "kernel.h"
+#include "brdfsim/kernel.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <random>
 
 #include "base/math.h"
-#include "splat_set.h"
+#include "brdfsim/splat_set.h"
 
 namespace gonio {
 namespace {

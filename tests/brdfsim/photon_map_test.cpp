@@ -1,6 +1,6 @@
 // Photon-map files: round trip, streaming, the header's traced paths, and clear rejection of
 // malformed input with file and line; synthetic maps are deterministic whatever the threads.
-#include "photon_map.h"
+#include "brdfsim/photon_map.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "synth.h"
+#include "brdfsim/synth.h"
 #include "test_util.h"
 
 namespace gonio {

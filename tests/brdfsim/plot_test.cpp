@@ -1,6 +1,6 @@
 // Plots: the layout's axes, the raster writer's pixels read back from the PNG (curves where the
 // data says, dashes with gaps, legend, text), and the SVG writer drawing the same layout.
-#include "plot.h"
+#include "brdfsim/plot.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "section.h"
+#include "brdfsim/section.h"
 #include "test_util.h"
 
 namespace gonio {

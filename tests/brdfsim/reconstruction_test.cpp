@@ -7,10 +7,10 @@
 
 #include <map>
 
-#include "brdf_adaptive.h"
-#include "brdf_grid.h"
-#include "brdf_report.h"
-#include "brdf_simple.h"
+#include "brdfsim/brdf_adaptive.h"
+#include "brdfsim/brdf_grid.h"
+#include "brdfsim/brdf_report.h"
+#include "brdfsim/brdf_simple.h"
 #include "test_util.h"
 
 namespace gonio {

@@ -3,7 +3,7 @@
 // points, for every norm, both horizon modes, both domains, every range of the chord polynomials
 // (radii up to π/2), grey and coloured splats (a grey set keeps one weight a splat) and other
 // numbers of colour components than the fast path's three.
-#include "splat_tree.h"
+#include "brdfsim/splat_tree.h"
 
 #include <gtest/gtest.h>
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "analytic_brdf.h"
 #include "base/math.h"
-#include "brdf.h"
-#include "splat_set.h"
-#include "synth.h"
+#include "brdfsim/analytic_brdf.h"
+#include "brdfsim/brdf.h"
+#include "brdfsim/splat_set.h"
+#include "brdfsim/synth.h"
 
 namespace gonio::test {
 

@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "brdf_grid.h"
+#include "brdfsim/brdf_grid.h"
 #include "test_util.h"
 
 namespace gonio {

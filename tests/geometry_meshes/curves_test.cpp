@@ -1,11 +1,11 @@
-#include "geometry/curves.h"
+#include "renderer/geometry/curves.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "geometry/points.h"
 #include "mesh_test_util.h"
+#include "renderer/geometry/points.h"
 
 namespace gonio {
 namespace {

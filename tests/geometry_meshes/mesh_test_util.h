@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/shape.h"
+#include "renderer/geometry/shape.h"
 
 namespace gonio::test {
 

@@ -1,4 +1,4 @@
-#include "geometry/nurbs.h"
+#include "renderer/geometry/nurbs.h"
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <random>
 #include <set>
 
-#include "geometry/patches.h"
 #include "mesh_test_util.h"
+#include "renderer/geometry/patches.h"
 
 namespace gonio {
 namespace {

@@ -1,4 +1,4 @@
-#include "geometry/patches.h"
+#include "renderer/geometry/patches.h"
 
 #include <gtest/gtest.h>
 

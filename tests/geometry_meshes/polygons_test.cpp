@@ -1,4 +1,4 @@
-#include "geometry/polygons.h"
+#include "renderer/geometry/polygons.h"
 
 #include <gtest/gtest.h>
 

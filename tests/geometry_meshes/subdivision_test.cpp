@@ -1,4 +1,4 @@
-#include "geometry/subdivision.h"
+#include "renderer/geometry/subdivision.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // without atan2, must agree with the angle itself, for spans up to and beyond half a turn, in
 // either sense and from any start; Atan2 must agree with std::atan2 to a few units in the last
 // place everywhere, its special values included.
-#include "geometry/quadric_angles.h"
+#include "renderer/geometry/quadric_angles.h"
 
 #include <gtest/gtest.h>
 

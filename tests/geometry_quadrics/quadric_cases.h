@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/quadrics.h"
+#include "renderer/geometry/quadrics.h"
 
 namespace gonio::test {
 

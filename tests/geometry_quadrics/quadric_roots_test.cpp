@@ -1,5 +1,5 @@
 // The polynomial root finder behind the torus.
-#include "geometry/quadric_roots.h"
+#include "renderer/geometry/quadric_roots.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "image/film.h"
+#include "renderer/image/film.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

@@ -1,5 +1,5 @@
 // Writes images through WriteDisplay and reads them back with OpenImageIO (a test may include it).
-#include "image/image_writer.h"
+#include "renderer/image/image_writer.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // The whole chain through brdfsim's library (the photon map the tracer writes, splatted and
 // gridded as `gonio brdf iopt` does): the Lambert plane gives kd/π and the Phong plane the
 // analytic normalised lobe, smoothed by the splat as brdfsim's own validation predicts.
-#include "analytic_brdf.h"
-#include "brdf_grid.h"
+#include "brdfsim/analytic_brdf.h"
+#include "brdfsim/brdf_grid.h"
 #include "photon_test_util.h"
 
 namespace gonio {

@@ -3,8 +3,8 @@
 
 #include <regex>
 
+#include "base/random.h"
 #include "photon_test_util.h"
-#include "render/random.h"
 
 namespace gonio {
 namespace {

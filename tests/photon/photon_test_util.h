@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "base/math.h"
-#include "photon/photon_tracer.h"
-#include "photon_map.h"
-#include "render/ray_scene.h"
-#include "rib/rib_parser.h"
-#include "scene/scene_builder.h"
+#include "brdfsim/photon_map.h"
+#include "renderer/photon/photon_tracer.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace gonio::test {
 

@@ -1,5 +1,5 @@
 // The polynomial angles of the photon-map rows (photon/row_angles.h) against the exact ones.
-#include "photon/row_angles.h"
+#include "renderer/photon/row_angles.h"
 
 #include <gtest/gtest.h>
 

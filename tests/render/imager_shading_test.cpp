@@ -2,7 +2,7 @@
 // parsed from RIB: the globals an imager sees (Ci, Oi, alpha, P, Du/Dv), what it writes back,
 // ColorSamples, the error messages of unusable requests, and independence from threads.
 
-#include "shading/imager_shading.h"
+#include "renderer/shading/imager_shading.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "rib/rib_parser.h"
-#include "scene/scene_builder.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace gonio {
 namespace {

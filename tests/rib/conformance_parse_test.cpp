@@ -27,7 +27,12 @@ TEST(Conformance, EverySceneParses) {
     const fs::path root = GONIO_CONFORMANCE_DIR;
     if (!fs::exists(root / "index.tsv")) GTEST_SKIP() << "no " << root;
     const auto scenes = Scenes(root / "index.tsv");
-    EXPECT_EQ(scenes.size(), 45u);
+    // The index names every scene the suite ships, and nothing else.
+    std::size_t folders = 0;
+    for (const auto& entry : fs::directory_iterator(root / "scenes"))
+        folders += entry.is_directory();
+    EXPECT_EQ(scenes.size(), folders);
+    EXPECT_GE(scenes.size(), 40u) << "the index lost most of its scenes";
     for (const auto& [scene, rib] : scenes) {
         const fs::path path = root / "scenes" / scene / rib;
         const ParseResult result = ParseFile(path.string());

@@ -1,6 +1,6 @@
 // The RIB type system: predeclared names, Declare, inline declarations, and clear errors.
 
-#include "rib/declarations.h"
+#include "renderer/rib/declarations.h"
 
 #include <gtest/gtest.h>
 

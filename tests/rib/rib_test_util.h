@@ -9,7 +9,7 @@
 
 #include "base/diagnostics.h"
 #include "recording_target.h"
-#include "rib/rib_parser.h"
+#include "renderer/rib/rib_parser.h"
 
 namespace gonio {
 

@@ -1,7 +1,7 @@
 // RibWriter prints calls back as RIB that parses to the same calls: parse(print(parse(x))) ==
 // parse(x), for every request kind and for awkward values.
 
-#include "rib/rib_writer.h"
+#include "renderer/rib/rib_writer.h"
 
 #include <gtest/gtest.h>
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "rib/rib_parser.h"
-#include "scene/scene_builder.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace gonio {
 namespace {

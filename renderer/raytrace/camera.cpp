@@ -1,9 +1,9 @@
-#include "render/camera.h"
+#include "renderer/raytrace/camera.h"
 
 #include <cmath>
 
 #include "base/math.h"
-#include "render/motion.h"
+#include "renderer/raytrace/motion.h"
 
 namespace gonio {
 namespace {

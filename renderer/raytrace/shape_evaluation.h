@@ -3,8 +3,8 @@
 // the shapes whose surface we know without the ray tracer (meshes, quadrics, curves, points).
 // Subdivision surfaces are evaluated by Embree in ray_scene.cpp.
 
-#include "geometry/shape.h"
-#include "scene/frame.h"
+#include "renderer/geometry/shape.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

@@ -6,17 +6,10 @@
 #include <string>
 
 #include "base/diagnostics.h"
-#include "scene/frame.h"
+#include "renderer/scene/frame.h"
+#include "renderer/scene/render_settings.h"
 
 namespace gonio {
-
-struct RenderSettings {
-    uint64_t seed = 0;
-    bool progress = false;
-    // Replaces the first Display's file name (gonio render -o); for several frames a "#" in it
-    // is replaced by the frame number.
-    std::string outputOverride;
-};
 
 struct RenderStats {
     double seconds = 0;

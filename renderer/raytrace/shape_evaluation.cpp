@@ -1,4 +1,4 @@
-#include "render/shape_evaluation.h"
+#include "renderer/raytrace/shape_evaluation.h"
 
 #include <cmath>
 

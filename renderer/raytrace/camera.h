@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "scene/options.h"
+#include "renderer/scene/options.h"
 
 namespace gonio {
 

@@ -1,4 +1,4 @@
-#include "render/frame_renderer.h"
+#include "renderer/frame/frame_renderer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -11,14 +11,14 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "image/film.h"
-#include "image/image_writer.h"
-#include "render/camera.h"
-#include "render/progress.h"
-#include "render/random.h"
-#include "render/ray_scene.h"
-#include "shading/imager_shading.h"
-#include "shading/surface_shading.h"
+#include "base/progress.h"
+#include "base/random.h"
+#include "renderer/image/film.h"
+#include "renderer/image/image_writer.h"
+#include "renderer/raytrace/camera.h"
+#include "renderer/raytrace/ray_scene.h"
+#include "renderer/shading/imager_shading.h"
+#include "renderer/shading/surface_shading.h"
 
 namespace gonio {
 namespace {

@@ -1,6 +1,6 @@
 // The one file that includes Embree (STYLE.md habit 3).
 
-#include "render/ray_scene.h"
+#include "renderer/raytrace/ray_scene.h"
 
 #include <embree3/rtcore.h>
 
@@ -10,8 +10,8 @@
 #include <limits>
 #include <string>
 
-#include "render/motion.h"
-#include "render/shape_evaluation.h"
+#include "renderer/raytrace/motion.h"
+#include "renderer/raytrace/shape_evaluation.h"
 
 namespace gonio {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "base/diagnostics.h"
-#include "render/surface_point.h"
-#include "scene/frame.h"
+#include "renderer/raytrace/surface_point.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 

@@ -8,8 +8,8 @@
 
 #include <vector>
 
-#include "render/shape_evaluation.h"
-#include "scene/frame.h"
+#include "renderer/raytrace/shape_evaluation.h"
+#include "renderer/scene/frame.h"
 
 namespace gonio {
 
