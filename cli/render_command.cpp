@@ -11,6 +11,7 @@
 #include "renderer/photon/photon_frame.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
+#include "renderer/scene/unused_parameters.h"
 
 namespace gonio {
 namespace {
@@ -60,11 +61,12 @@ int RunRender(const RenderOptions& options) {
         }
         if (IsBrdfLightFrame(frame)) {
             outputFailed |= !TracePhotonFrame(frame, settings, diagnostics);
-            return;
+        } else {
+            RenderStats stats;
+            outputFailed |= !RenderFrame(frame, settings, diagnostics, &stats);
+            if (options.stats) PrintStats(frame, stats);
         }
-        RenderStats stats;
-        outputFailed |= !RenderFrame(frame, settings, diagnostics, &stats);
-        if (options.stats) PrintStats(frame, stats);
+        ReportUnusedParameters(frame, diagnostics);
     };
     SceneBuilder builder(options.scene, diagnostics, renderFrame);
     ParseRibFile(options.scene, builder, diagnostics);

@@ -2,9 +2,41 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
+#include <mutex>
 
 namespace gonio::sl {
+
+bool ShadingContext::Unavailable(const std::string& what, int channels, float* out) {
+    std::fill_n(out, size_t(channels) * size_t(n_), 0.0f);
+    RuntimeWarning(what, what + " is not available here; it gives 0");
+    return false;
+}
+
+const std::vector<LightResult>& ShadingContext::Lights() {
+    static const std::vector<LightResult> kNone;
+    return kNone;
+}
+
+bool ShadingContext::Texture(const std::string& name, int, int channels, const float*, const float*,
+                             const float*, const float*, const float*, const float*, const uint8_t*,
+                             float* out) {
+    return Unavailable("texture(\"" + name + "\")", channels, out);
+}
+
+bool ShadingContext::Environment(const std::string& name, int, int channels, const float*,
+                                 const uint8_t*, float* out) {
+    return Unavailable("environment(\"" + name + "\")", channels, out);
+}
+
+bool ShadingContext::Shadow(const std::string& name, const float*, const uint8_t*, float* out) {
+    return Unavailable("shadow(\"" + name + "\")", 1, out);
+}
+
+void ShadingContext::Trace(const float*, const float*, const uint8_t*, float* out) {
+    Unavailable("trace()", colorComponents_, out);
+}
 
 bool ShadingContext::MeasuredBrdf(const std::string& name, int count, const float*, const float*,
                                   const uint8_t*, float* out) {
@@ -12,6 +44,29 @@ bool ShadingContext::MeasuredBrdf(const std::string& name, int count, const floa
     RuntimeWarning("brdf " + name,
                    "brdf(\"" + name + "\"): measured BRDFs are read by the renderer only");
     return false;
+}
+
+bool ShadingContext::Attribute(const std::string&, const TypeSpec&, int, std::vector<float>*,
+                               std::string*) const {
+    return false;
+}
+
+bool ShadingContext::Option(const std::string&, const TypeSpec&, std::vector<float>*,
+                            std::string*) const {
+    return false;
+}
+
+bool ShadingContext::RendererInfo(const std::string& name, const TypeSpec& type,
+                                  std::vector<float>*, std::string* text) const {
+    if (name != "renderer" || type.base != BaseType::String) return false;
+    *text = "gonio";
+    return true;
+}
+
+void ShadingContext::Print(const std::string& text) {
+    static std::mutex printMutex;
+    std::lock_guard<std::mutex> lock(printMutex);
+    std::fputs(text.c_str(), stdout);
 }
 
 FileLoc StatementLoc(const std::string& statement, const std::string& fallbackFile) {

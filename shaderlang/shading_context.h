@@ -3,6 +3,9 @@
 // RendererServices in spirit): coordinate spaces, lights, textures, traced rays, attributes and
 // options. The renderer implements it; `gonio shade` implements a simple one for testing.
 // Every method works on the whole batch; per-point data is component-major as in batch.h.
+// Spaces, neighbours and warnings are every context's own; the rest has a default (no lights,
+// no attributes, and textures, shadows, traced rays and measured BRDFs that give 0 with a
+// warning), so that a context overrides only what it has.
 
 #include <Imath/ImathMatrix.h>
 
@@ -88,7 +91,7 @@ class ShadingContext {
     // The lights that illuminate the batch, evaluated at the current surface points with the
     // given (surface shader's) P; cached by the renderer so that several diffuse()/specular()/
     // illuminance uses in one shader run evaluate each light once.
-    virtual const std::vector<LightResult>& Lights() = 0;
+    virtual const std::vector<LightResult>& Lights();
 
     // The lights evaluated at other positions `P` (3 × n, current space; light shaders see them
     // as Ps): illuminance(P', ...) with P' other than the surface's P (RISpec §13.3.1: the
@@ -107,12 +110,12 @@ class ShadingContext {
     // context then reports why through RuntimeWarning.
     virtual bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
                          const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                         const float* dtdy, const uint8_t* active, float* out) = 0;
+                         const float* dtdy, const uint8_t* active, float* out);
     virtual bool Environment(const std::string& name, int firstChannel, int channels,
                              const float* directions /* 3 × n */, const uint8_t* active,
-                             float* out) = 0;
+                             float* out);
     virtual bool Shadow(const std::string& name, const float* points /* 3 × n */,
-                        const uint8_t* active, float* out /* n */) = 0;
+                        const uint8_t* active, float* out /* n */);
 
     // The file a texture-like name refers to (texture(), environment(), brdf()), looked up on
     // the renderer's texture search path; the name itself where there is no such path.
@@ -128,16 +131,17 @@ class ShadingContext {
                               const float* wOut, const uint8_t* active, float* out);
 
     // trace(P, R): colour arriving at each P from direction R (ncomps × n), by a traced ray.
-    virtual void Trace(const float* P, const float* R, const uint8_t* active, float* out) = 0;
+    virtual void Trace(const float* P, const float* R, const uint8_t* active, float* out);
 
     // attribute(), option(), rendererinfo(): the value named `name` as `type` (floats or a
     // string); false if there is none of that type.
+    // The defaults know none, but rendererinfo("renderer") is "gonio".
     virtual bool Attribute(const std::string& name, const TypeSpec& type, int point,
-                           std::vector<float>* floats, std::string* text) const = 0;
+                           std::vector<float>* floats, std::string* text) const;
     virtual bool Option(const std::string& name, const TypeSpec& type, std::vector<float>* floats,
-                        std::string* text) const = 0;
+                        std::string* text) const;
     virtual bool RendererInfo(const std::string& name, const TypeSpec& type,
-                              std::vector<float>* floats, std::string* text) const = 0;
+                              std::vector<float>* floats, std::string* text) const;
 
     // surface(), displacement(), atmosphere(): the parameter `name` of the batch's shader of
     // that kind as that shader left it at these points (or as it stands while it runs). The
@@ -177,8 +181,8 @@ class ShadingContext {
         return statement_ ? *statement_ : kNone;
     }
 
-    // printf output.
-    virtual void Print(const std::string& text) = 0;
+    // printf output; the default writes to stdout, one whole text at a time.
+    virtual void Print(const std::string& text);
 
     // Derivatives are differences over neighbouring points of the batch: for point i, the index
     // of a neighbouring point in each of two independent directions, or -1 when there is none
@@ -193,6 +197,8 @@ class ShadingContext {
     virtual const float* NeighbourSteps() const { return nullptr; }
 
   protected:
+    // Zeroes `channels` × n floats of `out` and warns that `what` gives 0 in this context.
+    bool Unavailable(const std::string& what, int channels, float* out);
     // One seed per point (PointCount() of them), or nullptr: each point's index.
     void SeedRandom(const uint64_t* seeds) {
         randomState_.resize(size_t(n_));

@@ -116,6 +116,16 @@ class ShadingSystem {
     std::map<std::string, std::shared_ptr<const Shader>> cache_;  // nullptr: failed before
 };
 
+// What a specialised instance asks of the renderer beyond running it (OSL's "globals_read"):
+// read off its code, so that a derivative or a trace() in a branch the instance's constants
+// remove costs nothing.
+struct ShaderNeeds {
+    bool derivatives = false;              // calls Du, Dv, Deriv, area, calculatenormal, texture,
+                                           // filterstep, ... or reads the globals du, dv
+    bool trace = false;                    // calls trace()
+    std::vector<std::string> globalsRead;  // the predefined variables its code reads ("P", "N")
+};
+
 // A shader with parameter values: the master's code specialised to the instance's constants.
 class ShaderInstance {
   public:
@@ -138,11 +148,15 @@ class ShaderInstance {
 
     // The value of a string parameter after overrides ("" if none), e.g. a light's __category.
     std::string StringParameter(const std::string& name) const;
+    // The values of a numeric parameter after overrides (else its constant default); empty if
+    // the shader has no such parameter or computes its default at run time.
+    std::vector<float> FloatParameter(const std::string& name) const;
 
     // Folds constants and removes dead code with the parameter values known. Called by the
     // first Run when not called before; call it before sharing the instance between threads.
     void Specialize();
     const Program& Code() const;  // the specialised code (after Specialize)
+    ShaderNeeds Needs() const;    // of the specialised code (after Specialize)
     // Keeps variables of the shader body alive through dead-code removal, so that
     // ShaderExecutor::Output can read them (`gonio shade --print`). Call before Specialize.
     void KeepVariables() { keepVariables_ = true; }

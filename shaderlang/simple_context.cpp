@@ -54,22 +54,6 @@ void SimpleShadingContext::RunLights(const float* P, std::vector<LightResult>* r
     }
 }
 
-bool SimpleShadingContext::Texture(const std::string& name, int, int channels, const float*,
-                                   const float*, const float*, const float*, const float*,
-                                   const float*, const uint8_t*, float* out) {
-    std::fill_n(out, size_t(channels) * n_, 0.0f);
-    RuntimeWarning("texture:" + name, "gonio shade has no textures: '" + name + "' is black");
-    return false;
-}
-
-bool SimpleShadingContext::Environment(const std::string& name, int, int channels, const float*,
-                                       const uint8_t*, float* out) {
-    std::fill_n(out, size_t(channels) * n_, 0.0f);
-    RuntimeWarning("environment:" + name,
-                   "gonio shade has no environment maps: '" + name + "' is black");
-    return false;
-}
-
 bool SimpleShadingContext::Shadow(const std::string&, const float*, const uint8_t*, float* out) {
     std::fill_n(out, size_t(n_), 0.0f);  // unshadowed
     return false;
@@ -77,25 +61,6 @@ bool SimpleShadingContext::Shadow(const std::string&, const float*, const uint8_
 
 void SimpleShadingContext::Trace(const float*, const float*, const uint8_t*, float* out) {
     std::fill_n(out, size_t(colorComponents_) * n_, 0.0f);  // nothing to hit
-}
-
-bool SimpleShadingContext::Attribute(const std::string&, const TypeSpec&, int, std::vector<float>*,
-                                     std::string*) const {
-    return false;
-}
-
-bool SimpleShadingContext::Option(const std::string&, const TypeSpec&, std::vector<float>*,
-                                  std::string*) const {
-    return false;
-}
-
-bool SimpleShadingContext::RendererInfo(const std::string& name, const TypeSpec& type,
-                                        std::vector<float>*, std::string* text) const {
-    if (name == "renderer" && type.base == BaseType::String) {
-        *text = "gonio";
-        return true;
-    }
-    return false;
 }
 
 void SimpleShadingContext::RuntimeWarning(const std::string& key, const std::string& message) {

@@ -28,20 +28,9 @@ class SimpleShadingContext : public ShadingContext {
     bool CurrentFromSpace(const std::string& space, int point, Imath::M44f* m) const override;
     const std::vector<LightResult>& Lights() override;
     const std::vector<LightResult>& LightsAt(const float* P, const uint8_t* active) override;
-    bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                 const float* dtdy, const uint8_t* active, float* out) override;
-    bool Environment(const std::string& name, int firstChannel, int channels,
-                     const float* directions, const uint8_t* active, float* out) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
                 float* out) override;
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
-    bool Attribute(const std::string& name, const TypeSpec& type, int point,
-                   std::vector<float>* floats, std::string* text) const override;
-    bool Option(const std::string& name, const TypeSpec& type, std::vector<float>* floats,
-                std::string* text) const override;
-    bool RendererInfo(const std::string& name, const TypeSpec& type, std::vector<float>* floats,
-                      std::string* text) const override;
     void RuntimeWarning(const std::string& key, const std::string& message) override;
     void Print(const std::string& text) override;
     const int* UNeighbours() const override { return uNeighbours_.data(); }

@@ -31,18 +31,6 @@ std::string Lowercase(std::string text) {
     return text;
 }
 
-// The name of a parameter whose token may carry an inline declaration ("string compression").
-std::string ParamName(const std::string& token) {
-    size_t space = token.find_last_of(" \t");
-    return space == std::string::npos ? token : token.substr(space + 1);
-}
-
-const Param* FindParam(const ParamList& params, const std::string& name) {
-    for (const Param& p : params)
-        if (ParamName(p.token) == name) return &p;
-    return nullptr;
-}
-
 // OpenImageIO's format for a file extension, from its own "extension_list".
 std::string FormatForExtension(const std::string& extension) {
     static const std::map<std::string, std::string> formats = [] {
@@ -259,23 +247,13 @@ PixelType ChoosePixelType(const DisplaySpec& display, const std::string& format,
         type.isFloat = false;
         type.colour = type.depth = Quantization{65535, 0, 65535, 0.5f};
     }
-    const Param* pixelType = FindParam(display.params, "exrpixeltype");
-    type.half = type.isFloat && format == "openexr" && pixelType && pixelType->isString &&
-                !pixelType->strings.empty() && pixelType->strings[0] == "half";
+    type.half = type.isFloat && format == "openexr" &&
+                display.params.GetString("exrpixeltype", "float") == "half";
     return type;
 }
 
-void WarnAboutUnusedParams(const ParamList& params, Diagnostics& diagnostics) {
-    for (const Param& p : params) {
-        std::string name = ParamName(p.token);
-        if (name != "compression" && name != "exrpixeltype" && name != "origin")
-            diagnostics.WarningOnce("display-param-" + name, p.loc,
-                                    "Display parameter \"" + name + "\" is not used");
-    }
-}
-
 OIIO::ImageSpec MakeImageSpec(const Image& image, const std::vector<OutputChannel>& channels,
-                              OIIO::TypeDesc fileFormat, const ParamList& params) {
+                              OIIO::TypeDesc fileFormat, const ParamDict& params) {
     OIIO::ImageSpec spec(image.width, image.height, int(channels.size()), fileFormat);
     // Data window: the crop window where it lies in the frame; display window: the frame.
     spec.x = image.xorigin;
@@ -290,9 +268,8 @@ OIIO::ImageSpec MakeImageSpec(const Image& image, const std::vector<OutputChanne
         if (channels[c].kind == ChannelKind::Alpha) spec.alpha_channel = int(c);
         if (channels[c].kind == ChannelKind::Depth) spec.z_channel = int(c);
     }
-    const Param* compression = FindParam(params, "compression");
-    if (compression && compression->isString && !compression->strings.empty())
-        spec.attribute("compression", compression->strings[0]);
+    const std::string compression = params.GetString("compression", "");
+    if (!compression.empty()) spec.attribute("compression", compression);
     spec.attribute("Software", "gonio");
     return spec;
 }
@@ -373,12 +350,13 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
 
     const std::string format = ChooseFormat(display, diagnostics);
     PixelType type = ChoosePixelType(display, format, channels, colour, depth, diagnostics);
-    WarnAboutUnusedParams(display.params, diagnostics);
+    display.params.Has("origin");  // accepted: a window position only a framebuffer would use
     PixelData data =
         ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
     OIIO::TypeDesc fileFormat = type.half ? OIIO::TypeDesc::HALF : data.format;
     error = WriteAtomically(format, display.name,
                             MakeImageSpec(image, channels, fileFormat, display.params), data);
+    display.params.ReportUnused("Display \"" + display.name + "\"", diagnostics);
     return error.empty() || fail(error);
 }
 

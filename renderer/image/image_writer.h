@@ -23,7 +23,7 @@
 
 #include "base/diagnostics.h"
 #include "renderer/image/film.h"
-#include "renderer/rib/param_list.h"
+#include "renderer/scene/param_dict.h"
 
 namespace gonio {
 
@@ -31,9 +31,10 @@ struct DisplaySpec {
     std::string name;  // the file name (a leading "+" already removed)
     std::string type;  // "file", "tiff", "openexr", "png", "framebuffer", ...
     std::string mode;  // "rgb", "rgba", "rgbz", "rgbaz", "a", "z", "az", or an AOV name
-    // Driver parameters as written: "compression" (string, passed to OpenImageIO),
-    // "exrpixeltype" ("half" | "float"), "origin" (accepted; only a framebuffer would use it).
-    ParamList params;
+    // Driver parameters, typed: "compression" (string, passed to OpenImageIO), "exrpixeltype"
+    // ("half" | "float"), "origin" (accepted; only a framebuffer would use it). Any other is
+    // reported as having had no effect.
+    ParamDict params;
     FileLoc loc;
 };
 

@@ -1,13 +1,25 @@
 #include "renderer/photon/brdflight_options.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
 
 namespace gonio {
 namespace {
 
-std::string ParamName(const std::string& token) {
-    const size_t space = token.find_last_of(' ');
-    return space == std::string::npos ? token : token.substr(space + 1);
+// Reads the numeric BRDFLight parameter `name` when it is given: false (after an error at its
+// location) when it fails `good`, which `expected` describes.
+template <typename Good>
+bool ReadNumber(const ParamDict& params, const char* name, Good good, const char* expected,
+                Diagnostics& diagnostics, double* value) {
+    const TypedParam* p = params.Find(name);
+    if (!p || p->numbers.empty()) return true;
+    *value = p->numbers[0];
+    if (good(*value)) return true;
+    diagnostics.Error(params.Location(name), std::string("Option \"BRDFLight\" \"") + name +
+                                                 "\": expected " + expected + ", got " +
+                                                 std::to_string(*value));
+    return false;
 }
 
 }  // namespace
@@ -16,50 +28,38 @@ bool IsBrdfLightFrame(const Frame& frame) { return frame.options.user.count("BRD
 
 bool ReadBrdfLightOptions(const Frame& frame, Diagnostics& diagnostics, BrdfLightOptions* out) {
     BrdfLightOptions o;
-    bool ok = true;
-    const ParamList& params = frame.options.user.at("BRDFLight");
-    if (!params.empty()) o.loc = params.front().loc;
-    for (const Param& p : params) {
-        const std::string name = ParamName(p.token);
-        if (p.isString) {
-            if (name == "texturename" && !p.strings.empty()) o.textureName = p.strings[0];
-            continue;
-        }
-        if (p.numbers.empty()) continue;
-        const double v = p.numbers[0];
-        auto require = [&](bool good, const char* expected) {
-            if (good) return;
-            diagnostics.Error(p.loc, "Option \"BRDFLight\" \"" + name + "\": expected " + expected +
-                                         ", got " + std::to_string(v));
-            ok = false;
-        };
-        if (name == "rays") {
-            require(v > 0, "a positive number of photon paths");
-            o.rays = static_cast<int64_t>(v);
-        } else if (name == "area") {
-            require(v > 0, "a positive side length of the sampling area");
-            o.area = static_cast<float>(v);
-        } else if (name == "isotropic") {
-            o.isotropic = v != 0;
-        } else if (name == "averageazimuth") {
-            o.averageAzimuth = v != 0;
-        } else if (name == "seed") {
-            require(v >= 0, "a non-negative seed");
-            o.hasSeed = true;
-            o.seed = static_cast<uint64_t>(v);
-        } else if (name == "maxdepth") {
-            require(v >= 1, "at least 1 bounce");
-            o.maxDepth = static_cast<int>(v);
-        } else if (name == "periodic") {
-            o.periodic = v != 0;
-        } else if (name == "thetamin") {
-            require(v >= 0 && v < 90, "an angle in [0, 90) degrees");
-            o.thetaMin = static_cast<float>(v);
-        } else if (name == "thetamax") {
-            require(v > 0 && v <= 90, "an angle in (0, 90] degrees");
-            o.thetaMax = static_cast<float>(v);
-        }
-    }
+    const ParamDict& params = frame.options.user.at("BRDFLight");
+    o.loc = params.FirstLocation();
+    o.textureName = params.GetString("texturename", "");
+    o.isotropic = params.GetNumber("isotropic", 0) != 0;
+    o.averageAzimuth = params.GetNumber("averageazimuth", 0) != 0;
+    o.periodic = params.GetNumber("periodic", 0) != 0;
+    double rays = double(o.rays), area = o.area, seed = -1, maxDepth = o.maxDepth;
+    double thetaMin = o.thetaMin, thetaMax = o.thetaMax;
+    bool ok = ReadNumber(
+        params, "rays", [](double v) { return v > 0; }, "a positive number of photon paths",
+        diagnostics, &rays);
+    ok &= ReadNumber(
+        params, "area", [](double v) { return v > 0; },
+        "a positive side length of the sampling area", diagnostics, &area);
+    ok &= ReadNumber(
+        params, "seed", [](double v) { return v >= 0; }, "a non-negative seed", diagnostics, &seed);
+    ok &= ReadNumber(
+        params, "maxdepth", [](double v) { return v >= 1; }, "at least 1 bounce", diagnostics,
+        &maxDepth);
+    ok &= ReadNumber(
+        params, "thetamin", [](double v) { return v >= 0 && v < 90; },
+        "an angle in [0, 90) degrees", diagnostics, &thetaMin);
+    ok &= ReadNumber(
+        params, "thetamax", [](double v) { return v > 0 && v <= 90; },
+        "an angle in (0, 90] degrees", diagnostics, &thetaMax);
+    o.rays = static_cast<int64_t>(rays);
+    o.area = static_cast<float>(area);
+    o.hasSeed = params.Has("seed");
+    if (o.hasSeed) o.seed = static_cast<uint64_t>(std::max(0.0, seed));
+    o.maxDepth = static_cast<int>(maxDepth);
+    o.thetaMin = static_cast<float>(thetaMin);
+    o.thetaMax = static_cast<float>(thetaMax);
     if (ok && o.thetaMin >= o.thetaMax) {
         diagnostics.Error(o.loc, "Option \"BRDFLight\": expected thetamin (" +
                                      std::to_string(o.thetaMin) + ") below thetamax (" +

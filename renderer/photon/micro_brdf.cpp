@@ -13,33 +13,13 @@ using Imath::V3f;
 
 V3f Mirror(const V3f& n, const V3f& wi) { return 2 * n.dot(wi) * n - wi; }
 
-// The last word of a parameter token: "uniform float Kd" and "Kd" both name Kd.
-std::string ParamName(const std::string& token) {
-    const size_t space = token.find_last_of(' ');
-    return space == std::string::npos ? token : token.substr(space + 1);
+// The first value of a numeric parameter of the instance; false if it has none.
+bool FindNumber(const sl::ShaderInstance& surface, const char* name, float* value) {
+    const std::vector<float> values = surface.FloatParameter(name);
+    if (values.empty()) return false;
+    *value = values[0];
+    return true;
 }
-
-bool FindNumber(const ParamList& params, const char* name, float* value) {
-    for (const Param& p : params) {
-        if (!p.isString && !p.numbers.empty() && ParamName(p.token) == name) {
-            *value = static_cast<float>(p.numbers[0]);
-            return true;
-        }
-    }
-    return false;
-}
-
-struct ShaderDefaults {
-    const char* name;
-    float kd, ks, roughness;
-};
-
-// The declared defaults of the RISpec standard surface shaders (RISpec Appendix A).
-constexpr ShaderDefaults kStandardSurfaces[] = {
-    {"matte", 1.0f, 0.0f, 0.1f},          {"plastic", 0.5f, 0.5f, 0.1f},
-    {"paintedplastic", 0.5f, 0.5f, 0.1f}, {"metal", 0.0f, 1.0f, 0.1f},
-    {"shinymetal", 0.0f, 1.0f, 0.1f},
-};
 
 }  // namespace
 
@@ -82,39 +62,33 @@ MicroBrdf::Sampled MicroBrdf::Sample(const V3f& n, const V3f& wi, float u0, floa
     return {wo, ValueWithLobe(n, wo, cosAlpha > 0 ? (1 - u1) / cosAlpha : 0.0f)};
 }
 
-MicroBrdf MicroBrdfFromAttributes(const Attributes& attributes, Diagnostics& diagnostics) {
-    const ShaderInstance& surface = attributes.surface;
-    ShaderDefaults defaults = kStandardSurfaces[0];
-    if (surface.IsSet()) {
-        const auto* known =
-            std::find_if(std::begin(kStandardSurfaces), std::end(kStandardSurfaces),
-                         [&](const ShaderDefaults& d) { return surface.name == d.name; });
-        if (known != std::end(kStandardSurfaces)) {
-            defaults = *known;
-        } else {
-            diagnostics.WarningOnce("brdflight shader " + surface.name, surface.loc,
-                                    "BRDFLight: surface shader \"" + surface.name +
-                                        "\" is not a standard one; its micro BRDF is read from "
-                                        "Kd, Ks, roughness or exponent with matte's defaults");
-        }
-    }
+MicroBrdf MicroBrdfFromShader(const sl::ShaderInstance& surface, const Attributes& attributes,
+                              Diagnostics& diagnostics) {
     MicroBrdf brdf;
-    brdf.kd = defaults.kd;
-    brdf.ks = defaults.ks;
-    float roughness = defaults.roughness;
-    FindNumber(surface.params, "Kd", &brdf.kd);
-    FindNumber(surface.params, "Ks", &brdf.ks);
-    FindNumber(surface.params, "roughness", &roughness);
+    const bool hasKd = FindNumber(surface, "Kd", &brdf.kd);
+    const bool hasKs = FindNumber(surface, "Ks", &brdf.ks);
+    if (!hasKd && !hasKs) {
+        diagnostics.WarningOnce("brdflight shader " + surface.Master().Name(),
+                                attributes.surface.loc,
+                                "BRDFLight: surface shader \"" + surface.Master().Name() +
+                                    "\" has neither Kd nor Ks; its micro BRDF is matte's (Kd 1)");
+        brdf.kd = 1, brdf.ks = 0;
+    } else {
+        if (!hasKd) brdf.kd = 0;
+        if (!hasKs) brdf.ks = 0;
+    }
+    float roughness = 0;
     // DESIGN.md: the Phong exponent is 1/roughness unless the shader names it.
-    brdf.exponent = roughness > 0 ? 1 / roughness : 1e4f;
-    FindNumber(surface.params, "exponent", &brdf.exponent);
+    if (FindNumber(surface, "roughness", &roughness))
+        brdf.exponent = roughness > 0 ? 1 / roughness : 1e4f;
+    FindNumber(surface, "exponent", &brdf.exponent);
     if (auto it = attributes.user.find("brdflight"); it != attributes.user.end()) {
-        FindNumber(it->second, "kd", &brdf.kd);
-        FindNumber(it->second, "ks", &brdf.ks);
-        FindNumber(it->second, "exponent", &brdf.exponent);
+        brdf.kd = it->second.GetFloat("kd", brdf.kd);
+        brdf.ks = it->second.GetFloat("ks", brdf.ks);
+        brdf.exponent = it->second.GetFloat("exponent", brdf.exponent);
     }
     if (brdf.kd < 0 || brdf.ks < 0 || brdf.exponent < 0) {
-        diagnostics.WarningOnce("brdflight negative", surface.loc,
+        diagnostics.WarningOnce("brdflight negative", attributes.surface.loc,
                                 "BRDFLight: negative kd, ks or exponent clamped to 0");
         brdf.kd = std::max(0.0f, brdf.kd);
         brdf.ks = std::max(0.0f, brdf.ks);

@@ -7,6 +7,7 @@
 
 #include "base/diagnostics.h"
 #include "renderer/scene/attributes.h"
+#include "shaderlang/shading_system.h"
 
 namespace gonio {
 
@@ -35,10 +36,12 @@ struct MicroBrdf {
     Value ValueWithLobe(const Imath::V3f& n, const Imath::V3f& wo, float lobe) const;
 };
 
-// kd, ks and the exponent of a primitive from its surface shader instance (Kd, Ks, exponent or
-// 1/roughness, with the standard shaders' declared defaults) and `Attribute "brdflight"`.
-// Reports an unknown shader once and reads its Kd/Ks/roughness with matte's defaults.
-MicroBrdf MicroBrdfFromAttributes(const Attributes& attributes, Diagnostics& diagnostics);
+// kd, ks and the exponent of a primitive: its surface shader instance's Kd, Ks and exponent (or
+// 1/roughness), as the RIB sets them or as the shader declares them by default (a parameter
+// the shader lacks is 0), then `Attribute "brdflight"`. A shader with neither Kd nor Ks is
+// reported once and taken as matte (Kd 1).
+MicroBrdf MicroBrdfFromShader(const sl::ShaderInstance& surface, const Attributes& attributes,
+                              Diagnostics& diagnostics);
 
 // A unit vector from spherical angles about the frame (t, b, n).
 Imath::V3f FromLocal(const Imath::V3f& n, float cosTheta, float phi);

@@ -8,12 +8,14 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "base/math.h"
 #include "base/progress.h"
 #include "base/random.h"
 #include "renderer/photon/row_angles.h"
 #include "renderer/photon/scene_bounds.h"
+#include "renderer/shading/frame_shaders.h"
 
 namespace gonio {
 namespace {
@@ -237,12 +239,26 @@ void Accumulate(const PhotonStats& from, PhotonStats* to) {
 }  // namespace
 
 MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics) {
+    sl::ShadingSystem shaders(diagnostics, frame.options.colorComponents);
+    shaders.SetSearchPath(ShaderSearchPath(frame));
+    std::map<const Attributes*, MicroBrdf> byState;
+    auto brdfOf = [&](const Attributes& attributes) {
+        auto known = byState.find(&attributes);
+        if (known != byState.end()) return known->second;
+        // Without a Surface the micro geometry is matte, as in an image render.
+        ShaderInstance request = attributes.surface;
+        if (!request.IsSet()) request = ShaderInstance{"matte", {}, {}, attributes.surface.loc};
+        const auto surface = LoadShaderInstance(shaders, request, sl::ShaderType::Surface,
+                                                Imath::M44f(), Declarations(), diagnostics);
+        const MicroBrdf brdf =
+            surface ? MicroBrdfFromShader(*surface, attributes, diagnostics) : MicroBrdf{};
+        return byState.emplace(&attributes, brdf).first->second;
+    };
     MicroBrdfTable table;
-    for (const SceneShape& shape : frame.shapes)
-        table[&shape] = MicroBrdfFromAttributes(*shape.attributes, diagnostics);
+    for (const SceneShape& shape : frame.shapes) table[&shape] = brdfOf(*shape.attributes);
     for (const ObjectInstanceUse& use : frame.instances) {
         for (const SceneShape& shape : use.definition->shapes)
-            table[&shape] = MicroBrdfFromAttributes(*shape.attributes, diagnostics);
+            table[&shape] = brdfOf(*shape.attributes);
     }
     return table;
 }

@@ -55,7 +55,8 @@ struct PhotonTraceResult {
     PhotonStats stats;
 };
 
-// The micro BRDF of every shape of the frame (top level and object definitions).
+// The micro BRDF of every shape of the frame (top level and object definitions), from the
+// surface shaders found on the frame's shader search path (micro_brdf.h).
 using MicroBrdfTable = std::unordered_map<const SceneShape*, MicroBrdf>;
 MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics);
 

@@ -212,6 +212,11 @@ bool Declarations::Declare(const std::string& name, const std::string& declarati
     return true;
 }
 
+std::string TokenName(const std::string& token) {
+    const std::size_t space = token.find_last_of(" \t");
+    return space == std::string::npos ? token : token.substr(space + 1);
+}
+
 std::optional<ParamDecl> Declarations::Resolve(const std::string& token, std::string* error) const {
     const std::size_t space = token.find_last_of(" \t");
     if (space != std::string::npos) {

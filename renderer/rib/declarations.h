@@ -21,6 +21,9 @@ struct ParamDecl {
     int ComponentCount(int colorComponents) const;
 };
 
+// The name a parameter token gives: its last word ("st" for "facevarying float[2] st").
+std::string TokenName(const std::string& token);
+
 const char* ToString(ParamClass cls);
 const char* ToString(ParamType type);
 

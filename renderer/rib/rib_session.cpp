@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "base/search_path.h"
+#include "renderer/rib/declarations.h"
 #include "renderer/rib/rib_file_parser.h"
 #include "renderer/rib/rib_parser.h"
 
@@ -48,12 +49,6 @@ fs::path FolderOf(const std::string& path) {
 std::string ShortPath(const fs::path& path) {
     std::string text = path.lexically_normal().string();
     return text.rfind("./", 0) == 0 ? text.substr(2) : text;
-}
-
-// The name a searchpath token refers to: "archive" for "archive" or "string archive".
-std::string BareToken(const std::string& token) {
-    const std::size_t space = token.find_last_of(" \t");
-    return space == std::string::npos ? token : token.substr(space + 1);
 }
 
 }  // namespace
@@ -153,7 +148,7 @@ void RibSession::ReadArchive(const std::string& name, const FileLoc& loc) {
 void RibSession::OptionSeen(const std::string& name, const ParamList& params) {
     if (name != "searchpath") return;
     for (const Param& param : params) {
-        if (BareToken(param.token) != "archive" || !param.isString || param.strings.empty())
+        if (TokenName(param.token) != "archive" || !param.isString || param.strings.empty())
             continue;
         archivePath_ = ExpandSearchPath(param.strings[0], archivePath_, {});
     }

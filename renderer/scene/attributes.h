@@ -14,6 +14,7 @@
 #include "base/file_loc.h"
 #include "renderer/geometry/basis.h"
 #include "renderer/rib/param_list.h"
+#include "renderer/scene/param_dict.h"
 
 namespace gonio {
 
@@ -57,8 +58,8 @@ struct Attributes {
     bool matte = false;
     PatchBasis ubasis, vbasis;  // bezier unless Basis says otherwise
     std::string identifier;     // Attribute "identifier" "name"
-    // Every Attribute request by name, merged, for the shading language's attribute().
-    std::map<std::string, ParamList> user;
+    // Every Attribute request by name, merged and typed (attribute() reads them too).
+    std::map<std::string, ParamDict> user;
 };
 
 }  // namespace gonio

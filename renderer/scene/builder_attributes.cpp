@@ -19,12 +19,7 @@ std::string HandleKey(const RtHandle& handle) {
 
 bool LightCastsShadows(const Attributes& attributes) {
     auto it = attributes.user.find("light");
-    if (it == attributes.user.end()) return false;
-    for (const Param& p : it->second) {
-        const bool isShadows = p.token == "uniform string shadows";
-        if (isShadows && !p.strings.empty()) return p.strings[0] == "on";
-    }
-    return false;
+    return it != attributes.user.end() && it->second.GetString("shadows", "off") == "on";
 }
 
 }  // namespace
@@ -199,14 +194,12 @@ void SceneBuilder::Attribute(const std::string& name, const ParamList& params, c
     if (!IsKnownOptionName(false, name))
         diagnostics_.WarningOnce("Attribute " + name, loc,
                                  "unknown Attribute \"" + name + "\" (kept for shaders)");
-    ParamList& merged = MutableAttributes().user[name];
+    ParamDict& merged = MutableAttributes().user[name];
     for (const Param& p : params) {
-        PrimVar var;
-        if (!TypeOptionParam("Attribute", name, p, &var)) continue;
-        if (name == "identifier" && var.decl.name == "name" && !var.strings.empty())
-            MutableAttributes().identifier = var.strings[0];
-        MergeTypedParam(p, var, &merged);
+        TypedParam typed;
+        if (TypeOptionParam("Attribute", name, p, &typed)) merged.Set(std::move(typed), p.loc);
     }
+    if (name == "identifier") MutableAttributes().identifier = merged.GetString("name", "");
 }
 
 void SceneBuilder::Basis(const RtBasis& ubasis, int ustep, const RtBasis& vbasis, int vstep,

@@ -170,7 +170,11 @@ void SceneBuilder::Quantize(const std::string& type, int one, int min, int max, 
 void SceneBuilder::Display(const std::string& name, const std::string& type,
                            const std::string& mode, const ParamList& params, const FileLoc& loc) {
     if (!RequireOptions("Display", loc)) return;
-    DisplayRequest display{name, type, mode, params, loc};
+    DisplayRequest display{name, type, mode, {}, loc};
+    for (const Param& p : params) {
+        TypedParam typed;
+        if (TypeOptionParam("Display", "", p, &typed)) display.params.Set(std::move(typed), p.loc);
+    }
     // "+name" adds a display; a plain name replaces all earlier ones (RISpec §4.1.3).
     if (!name.empty() && name[0] == '+') {
         display.name = name.substr(1);
@@ -207,49 +211,38 @@ void SceneBuilder::RelativeDetail(float, const FileLoc& loc) {
 }
 
 bool SceneBuilder::TypeOptionParam(const std::string& request, const std::string& name,
-                                   const Param& param, PrimVar* var) {
+                                   const Param& param, TypedParam* out) {
     const int ncomps = state_->options.colorComponents;
     std::string unused;
     const bool inline_ = param.token.find(' ') != std::string::npos;
-    if (inline_ || declarations_.Resolve(param.token, &unused))
-        return TypeParam(param, declarations_, ncomps, diagnostics_, var);
-    const std::string standard = StandardParamDeclaration(request == "Option", name, param.token);
-    if (standard.empty()) {
-        diagnostics_.WarningOnce(
-            request + " " + name + " " + param.token, param.loc,
-            request + " \"" + name + "\": unknown parameter \"" + param.token + "\" ignored");
-        return false;
-    }
     Param typed = param;
-    typed.token = standard + " " + param.token;
-    return TypeParam(typed, declarations_, ncomps, diagnostics_, var);
-}
-
-void MergeTypedParam(const Param& param, const PrimVar& var, ParamList* merged) {
-    // The token is stored with its full type so that later readers need no declaration table.
-    Param typed = param;
-    typed.token = std::string(ToString(var.decl.cls)) + " " + ToString(var.decl.type) +
-                  (var.decl.arraySize > 1 ? "[" + std::to_string(var.decl.arraySize) + "]" : "") +
-                  " " + var.decl.name;
-    for (Param& old : *merged) {
-        if (old.token == typed.token) {
-            old = std::move(typed);
-            return;
+    if (!inline_ && !declarations_.Resolve(param.token, &unused)) {
+        const std::string standard = StandardParamDeclaration(request, name, param.token);
+        if (standard.empty()) {
+            const std::string what = name.empty() ? request : request + " \"" + name + "\"";
+            diagnostics_.WarningOnce(request + " " + name + " " + param.token, param.loc,
+                                     what + ": unknown parameter \"" + param.token + "\" ignored");
+            return false;
         }
+        typed.token = standard + " " + param.token;
     }
-    merged->push_back(std::move(typed));
+    PrimVar var;
+    if (!TypeParam(typed, declarations_, ncomps, diagnostics_, &var)) return false;
+    *out = TypedParam{var.decl, param.numbers, param.strings};
+    return true;
 }
 
 void SceneBuilder::Option(const std::string& name, const ParamList& params, const FileLoc& loc) {
     if (!RequireOptions("Option", loc)) return;
     if (!IsKnownOptionName(true, name))
         diagnostics_.WarningOnce("Option " + name, loc, "unknown Option \"" + name + "\" ignored");
-    ParamList& merged = state_->options.user[name];
+    ParamDict& merged = state_->options.user[name];
     for (const Param& p : params) {
-        PrimVar var;
-        if (!TypeOptionParam("Option", name, p, &var)) continue;
-        MergeTypedParam(p, var, &merged);
+        TypedParam typed;
+        if (TypeOptionParam("Option", name, p, &typed)) merged.Set(std::move(typed), p.loc);
     }
+    // The RIB front end follows the archive path itself (rib_session.cpp), before any target.
+    if (name == "searchpath") merged.Has("archive");
 }
 
 }  // namespace gonio

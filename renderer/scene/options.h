@@ -11,12 +11,13 @@
 #include "base/file_loc.h"
 #include "renderer/rib/param_list.h"
 #include "renderer/scene/attributes.h"
+#include "renderer/scene/param_dict.h"
 
 namespace gonio {
 
 struct DisplayRequest {
     std::string name, type, mode;
-    ParamList params;
+    ParamDict params;
     FileLoc loc;
 };
 
@@ -61,8 +62,8 @@ struct Options {
     // A moving camera: cameraFromWorld at each of these times (empty: static).
     std::vector<float> cameraMotionTimes;
     std::vector<Imath::M44f> cameraMotion;
-    // Every Option request by name, merged (searchpath, BRDFLight, statistics, ...).
-    std::map<std::string, ParamList> user;
+    // Every Option request by name, merged and typed (searchpath, BRDFLight, trace, ...).
+    std::map<std::string, ParamDict> user;
 };
 
 }  // namespace gonio

@@ -208,8 +208,10 @@ class SceneBuilder : public RiTarget {
                    const FileLoc& loc);
     int LightIndex(const RtHandle& handle, const FileLoc& loc);
     void AddLight(SceneLight light);
+    // Types a parameter of Option or Attribute `name` (inline declaration, Declare, or the
+    // standard table); false, after a message, if it cannot be typed.
     bool TypeOptionParam(const std::string& request, const std::string& name, const Param& param,
-                         PrimVar* var);
+                         TypedParam* out);
     // The attribute state for writing: primitives after the change get a new snapshot.
     Attributes& MutableAttributes();
     // Adds a primitive's shape with the current attributes and transform.

@@ -50,10 +50,6 @@ struct SceneBuilder::State {
     int motionRequestCount = -1;  // requests seen inside a MotionBegin block; -1 outside
 };
 
-// Adds an Option or Attribute parameter to the merged list of its name, replacing an earlier
-// value of the same parameter.
-void MergeTypedParam(const Param& param, const PrimVar& var, ParamList* merged);
-
 inline M44f ToM44f(const RtMatrix& m) {
     return M44f(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11], m[12],
                 m[13], m[14], m[15]);

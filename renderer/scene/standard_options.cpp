@@ -4,59 +4,62 @@ namespace gonio {
 namespace {
 
 struct StandardParam {
-    bool isOption;
+    const char* request;  // "Option", "Attribute" or "Display"
     const char* name;
     const char* token;
     const char* declaration;
 };
 
 constexpr StandardParam kStandardParams[] = {
-    {true, "searchpath", "shader", "uniform string"},
-    {true, "searchpath", "texture", "uniform string"},
-    {true, "searchpath", "archive", "uniform string"},
-    {true, "searchpath", "procedural", "uniform string"},
-    {true, "searchpath", "display", "uniform string"},
-    {true, "searchpath", "resource", "uniform string"},
-    {true, "statistics", "endofframe", "uniform integer"},
-    {true, "statistics", "filename", "uniform string"},
-    {true, "statistics", "xmlfilename", "uniform string"},
-    {true, "limits", "bucketsize", "uniform integer[2]"},
-    {true, "limits", "gridsize", "uniform integer"},
-    {true, "limits", "eyesplits", "uniform integer"},
-    {true, "limits", "texturememory", "uniform integer"},
-    {true, "limits", "othreshold", "uniform color"},
-    {true, "limits", "zthreshold", "uniform color"},
-    {true, "trace", "maxdepth", "uniform integer"},
-    {true, "render", "bucketorder", "uniform string"},
-    {true, "BRDFLight", "texturename", "uniform string"},
-    {true, "BRDFLight", "rays", "uniform integer"},
-    {true, "BRDFLight", "area", "uniform float"},
-    {true, "BRDFLight", "isotropic", "uniform integer"},
-    {true, "BRDFLight", "seed", "uniform integer"},
-    {true, "BRDFLight", "maxdepth", "uniform integer"},
-    {true, "BRDFLight", "periodic", "uniform integer"},
-    {true, "BRDFLight", "thetamin", "uniform float"},
-    {true, "BRDFLight", "thetamax", "uniform float"},
-    {true, "BRDFLight", "averageazimuth", "uniform integer"},
-    {false, "identifier", "name", "uniform string"},
-    {false, "light", "shadows", "uniform string"},
-    {false, "displacementbound", "sphere", "uniform float"},
-    {false, "displacementbound", "coordinatesystem", "uniform string"},
-    {false, "trimcurve", "sense", "uniform string"},
-    {false, "dice", "binary", "uniform integer"},
-    {false, "sides", "doubleshaded", "uniform integer"},
-    {false, "visibility", "camera", "uniform integer"},
-    {false, "visibility", "trace", "uniform integer"},
-    {false, "visibility", "transmission", "uniform string"},
-    {false, "visibility", "photon", "uniform integer"},
-    {false, "render", "visibility", "uniform integer"},
-    {false, "trace", "bias", "uniform float"},
-    {false, "trace", "maxdiffusedepth", "uniform integer"},
-    {false, "trace", "maxspeculardepth", "uniform integer"},
-    {false, "trace", "displacements", "uniform integer"},
-    {false, "brdflight", "kd", "uniform float"},
-    {false, "brdflight", "ks", "uniform float"},
-    {false, "brdflight", "exponent", "uniform float"},
+    {"Option", "searchpath", "shader", "uniform string"},
+    {"Option", "searchpath", "texture", "uniform string"},
+    {"Option", "searchpath", "archive", "uniform string"},
+    {"Option", "searchpath", "procedural", "uniform string"},
+    {"Option", "searchpath", "display", "uniform string"},
+    {"Option", "searchpath", "resource", "uniform string"},
+    {"Option", "statistics", "endofframe", "uniform integer"},
+    {"Option", "statistics", "filename", "uniform string"},
+    {"Option", "statistics", "xmlfilename", "uniform string"},
+    {"Option", "limits", "bucketsize", "uniform integer[2]"},
+    {"Option", "limits", "gridsize", "uniform integer"},
+    {"Option", "limits", "eyesplits", "uniform integer"},
+    {"Option", "limits", "texturememory", "uniform integer"},
+    {"Option", "limits", "othreshold", "uniform color"},
+    {"Option", "limits", "zthreshold", "uniform color"},
+    {"Option", "trace", "maxdepth", "uniform integer"},
+    {"Option", "render", "bucketorder", "uniform string"},
+    {"Option", "BRDFLight", "texturename", "uniform string"},
+    {"Option", "BRDFLight", "rays", "uniform integer"},
+    {"Option", "BRDFLight", "area", "uniform float"},
+    {"Option", "BRDFLight", "isotropic", "uniform integer"},
+    {"Option", "BRDFLight", "seed", "uniform integer"},
+    {"Option", "BRDFLight", "maxdepth", "uniform integer"},
+    {"Option", "BRDFLight", "periodic", "uniform integer"},
+    {"Option", "BRDFLight", "thetamin", "uniform float"},
+    {"Option", "BRDFLight", "thetamax", "uniform float"},
+    {"Option", "BRDFLight", "averageazimuth", "uniform integer"},
+    {"Attribute", "identifier", "name", "uniform string"},
+    {"Attribute", "light", "shadows", "uniform string"},
+    {"Attribute", "displacementbound", "sphere", "uniform float"},
+    {"Attribute", "displacementbound", "coordinatesystem", "uniform string"},
+    {"Attribute", "trimcurve", "sense", "uniform string"},
+    {"Attribute", "dice", "binary", "uniform integer"},
+    {"Attribute", "sides", "doubleshaded", "uniform integer"},
+    {"Attribute", "visibility", "camera", "uniform integer"},
+    {"Attribute", "visibility", "trace", "uniform integer"},
+    {"Attribute", "visibility", "transmission", "uniform string"},
+    {"Attribute", "visibility", "photon", "uniform integer"},
+    {"Attribute", "render", "visibility", "uniform integer"},
+    {"Attribute", "trace", "bias", "uniform float"},
+    {"Attribute", "trace", "maxdiffusedepth", "uniform integer"},
+    {"Attribute", "trace", "maxspeculardepth", "uniform integer"},
+    {"Attribute", "trace", "displacements", "uniform integer"},
+    {"Attribute", "brdflight", "kd", "uniform float"},
+    {"Attribute", "brdflight", "ks", "uniform float"},
+    {"Attribute", "brdflight", "exponent", "uniform float"},
+    // Display driver parameters (image_writer.h); the request has no name of its own.
+    {"Display", "", "compression", "uniform string"},
+    {"Display", "", "exrpixeltype", "uniform string"},
 };
 
 constexpr const char* kOtherKnownOptions[] = {"hider", "shading", "shutter", "user"};
@@ -65,16 +68,17 @@ constexpr const char* kOtherKnownAttributes[] = {"shade", "user",       "stochas
 
 }  // namespace
 
-std::string StandardParamDeclaration(bool isOption, const std::string& name,
+std::string StandardParamDeclaration(const std::string& request, const std::string& name,
                                      const std::string& token) {
     for (const StandardParam& p : kStandardParams)
-        if (p.isOption == isOption && name == p.name && token == p.token) return p.declaration;
+        if (request == p.request && name == p.name && token == p.token) return p.declaration;
     return "";
 }
 
 bool IsKnownOptionName(bool isOption, const std::string& name) {
+    const char* request = isOption ? "Option" : "Attribute";
     for (const StandardParam& p : kStandardParams)
-        if (p.isOption == isOption && name == p.name) return true;
+        if (request == std::string(p.request) && name == p.name) return true;
     if (isOption) {
         for (const char* other : kOtherKnownOptions)
             if (name == other) return true;

@@ -44,12 +44,8 @@ std::string SceneFolder(const Frame& frame) {
 std::vector<std::string> SearchPath(const Frame& frame, const std::string& kind,
                                     const std::vector<std::string>& standard) {
     auto it = frame.options.user.find("searchpath");
-    if (it == frame.options.user.end()) return standard;
-    for (const Param& p : it->second) {
-        if (p.token != "uniform string " + kind || p.strings.empty()) continue;
-        return ExpandSearchPath(p.strings[0], standard, standard);
-    }
-    return standard;
+    if (it == frame.options.user.end() || !it->second.Has(kind)) return standard;
+    return ExpandSearchPath(it->second.GetString(kind, ""), standard, standard);
 }
 
 // "a surface", "an imager".
@@ -112,7 +108,8 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
     for (auto& [attributes, group] : groups_) {
         for (const auto* instance :
              {group.surface.get(), group.displacement.get(), group.atmosphere.get()}) {
-            const ShaderNeeds needs = ScanShaderNeeds(instance);
+            if (!instance) continue;
+            const sl::ShaderNeeds needs = instance->Needs();
             group.needs.derivatives |= needs.derivatives;
             group.needs.trace |= needs.trace;
         }

@@ -25,7 +25,7 @@ struct ShaderGroup {
     const ShaderInstance* surfaceRequest = nullptr;    // for "shader" space
     // Names of primitive variables bound to surface-shader parameters.
     std::vector<std::string> boundPrimvars;
-    ShaderNeeds needs;  // of the surface, displacement and atmosphere together
+    sl::ShaderNeeds needs;  // of the surface, displacement and atmosphere together
 };
 
 struct FrameLight {

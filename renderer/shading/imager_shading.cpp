@@ -65,7 +65,6 @@ class ImagerContext : public sl::ShadingContext {
         }
         return false;
     }
-    const std::vector<sl::LightResult>& Lights() override { return noLights_; }
     bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
                  const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
                  const float* dtdy, const uint8_t* active, float* out) override {
@@ -88,26 +87,6 @@ class ImagerContext : public sl::ShadingContext {
         if (dataname == "viewingmatrix" || dataname == "projectionmatrix") return false;
         return textures_.Info(name, dataname, floats, text);
     }
-    bool Shadow(const std::string& name, const float*, const uint8_t*, float* out) override {
-        return Unavailable("shadow(\"" + name + "\")", 1, out);
-    }
-    void Trace(const float*, const float*, const uint8_t*, float* out) override {
-        Unavailable("trace()", colorComponents_, out);
-    }
-    bool Attribute(const std::string&, const sl::TypeSpec&, int, std::vector<float>*,
-                   std::string*) const override {
-        return false;
-    }
-    bool Option(const std::string&, const sl::TypeSpec&, std::vector<float>*,
-                std::string*) const override {
-        return false;
-    }
-    bool RendererInfo(const std::string& name, const sl::TypeSpec& type, std::vector<float>*,
-                      std::string* text) const override {
-        if (name != "renderer" || type.base != sl::BaseType::String) return false;
-        *text = "gonio";
-        return true;
-    }
     // At the shader statement, naming the Imager request.
     void RuntimeWarning(const std::string& key, const std::string& message) override {
         const ShaderInstance& request = frame_.options.imager;
@@ -117,26 +96,14 @@ class ImagerContext : public sl::ShadingContext {
             "imager " + where + key, loc,
             message + " (imager \"" + request.name + "\" of " + request.loc.ToString() + ")");
     }
-    void Print(const std::string& text) override {
-        static std::mutex printMutex;
-        std::lock_guard<std::mutex> lock(printMutex);
-        std::fputs(text.c_str(), stdout);
-    }
     const int* UNeighbours() const override { return uNeighbours_.data(); }
     const int* VNeighbours() const override { return vNeighbours_.data(); }
     const float* NeighbourSteps() const override { return steps_.data(); }
 
   private:
-    bool Unavailable(const std::string& what, int channels, float* out) {
-        std::fill_n(out, size_t(channels) * n_, 0.f);
-        RuntimeWarning(what, what + " is not available to imager shaders; it gives 0");
-        return false;
-    }
-
     const Frame& frame_;
     Diagnostics& diagnostics_;
     NamedTextures textures_;
-    std::vector<sl::LightResult> noLights_;
     std::vector<int> uNeighbours_, vNeighbours_;
     std::vector<float> steps_;
 };

@@ -289,20 +289,16 @@ bool RenderContext::Attribute(const std::string& name, const sl::TypeSpec& type,
     if (colon == std::string::npos) return false;
     auto group = a.user.find(name.substr(0, colon));
     if (group == a.user.end()) return false;
-    const std::string param = name.substr(colon + 1);
-    for (const Param& p : group->second) {
-        const size_t space = p.token.rfind(' ');
-        if (p.token.substr(space + 1) != param) continue;
-        if (p.isString) {
-            if (type.base != sl::BaseType::String || p.strings.empty()) return false;
-            *text = p.strings[0];
-            return true;
-        }
-        if (type.base == sl::BaseType::String) return false;
-        floats->assign(p.numbers.begin(), p.numbers.end());
+    const TypedParam* p = group->second.Find(name.substr(colon + 1));
+    if (!p) return false;
+    if (p->decl.type == ParamType::String) {
+        if (type.base != sl::BaseType::String || p->strings.empty()) return false;
+        *text = p->strings[0];
         return true;
     }
-    return false;
+    if (type.base == sl::BaseType::String) return false;
+    floats->assign(p->numbers.begin(), p->numbers.end());
+    return true;
 }
 
 bool RenderContext::Option(const std::string& name, const sl::TypeSpec& type,

@@ -12,7 +12,7 @@ bool ApplyRibParameters(sl::ShaderInstance& instance, const ParamList& params,
     const sl::Shader& shader = instance.Master();
     bool ok = true;
     for (const Param& param : params) {
-        std::string bare = param.token.substr(param.token.find_last_of(' ') + 1);
+        const std::string bare = TokenName(param.token);
         const sl::ShaderParam* p = shader.FindParam(bare);
         if (!p) {
             diagnostics.Warning(param.loc, "shader '" + shader.Name() + "' has no parameter '" +

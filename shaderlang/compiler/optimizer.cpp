@@ -13,7 +13,7 @@ namespace gonio::sl {
 namespace {
 
 constexpr unsigned kRunTimeOnly = kVaryingResult | kReadsGlobals | kUsesLights | kHasSideEffects |
-                                  kNeedsDerivatives | kReadsFiles;
+                                  kNeedsDerivatives | kReadsFiles | kTracesRays;
 
 bool HasJumpTarget(Op op) {
     return op == Op::Jump || op == Op::If || op == Op::Else || op == Op::LoopTest ||

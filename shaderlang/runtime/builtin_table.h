@@ -22,6 +22,7 @@ enum BuiltinFlags : unsigned {
     kHasSideEffects = 1u << 3,    // printf: never removed as dead code, never folded
     kNeedsDerivatives = 1u << 4,  // Du, Dv, Deriv, area, calculatenormal
     kReadsFiles = 1u << 5,        // brdf: reads files through the renderer, so runs only then
+    kTracesRays = 1u << 6,        // trace: asks the renderer to trace rays
 };
 
 struct BuiltinInfo {

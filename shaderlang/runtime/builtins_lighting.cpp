@@ -194,7 +194,7 @@ void AddLightingBuiltins(BuiltinList* list) {
     list->Add("specular", "c", "nvf", SpecularKernel, lighting);
     list->Add("specularbrdf", "c", "vnvf", SpecularBrdfKernel);
     list->Add("phong", "c", "nvf", PhongKernel, lighting);
-    list->Add("trace", "c", "pv", TraceKernel, kVaryingResult);
+    list->Add("trace", "c", "pv", TraceKernel, kVaryingResult | kTracesRays);
 }
 
 }  // namespace gonio::sl::builtins

@@ -254,11 +254,11 @@ TEST(WriteDisplay, ExrHalfOnRequest) {
     TempDir dir;
     CapturedDiagnostics diagnostics;
     DisplaySpec display = Display(dir.File("half.exr"), "exr", "rgb");
-    Param pixelType;
-    pixelType.token = "string exrpixeltype";
+    TypedParam pixelType;
+    pixelType.decl.name = "exrpixeltype";
+    pixelType.decl.type = ParamType::String;
     pixelType.strings = {"half"};
-    pixelType.isString = true;
-    display.params.push_back(pixelType);
+    display.params.Set(pixelType, {});
     ASSERT_TRUE(WriteDisplay(display, TestImage(), kChannelNames, Exposure{}, kFloat, kFloat,
                              diagnostics.Get()));
     EXPECT_EQ(Read(display.name).spec.format, OIIO::TypeDesc::HALF);

@@ -3,7 +3,9 @@
 
 Each library folder's README.md has one line starting "May depend on:" that names, in
 backticks, the project folders its files may include (`base/`, `renderer/scene/`) and the
-guarded external libraries it may include (`<embree3/>`). A folder may always include itself.
+guarded external libraries it may include (`<embree3/>`). A folder may always include itself. A README may
+also have a line "Public headers:" naming, in backticks, the only files of the folder that
+other folders may include (the rest are private to it, as OSL keeps its include/OSL/).
 Includes of project headers are spelled from the repository root ("renderer/scene/frame.h");
 a bare name ("parse_state.h") is the folder's own. Prints every crossing as
 file:line: error: ... and exits 1 if there is any.
@@ -46,6 +48,17 @@ def allowed_of(root, folder):
     return folders | {folder}, guarded
 
 
+def public_headers_of(root, folder):
+    """The headers other folders may include from `folder`, or None when all of them."""
+    try:
+        with open(os.path.join(root, folder, "README.md"), encoding="utf-8") as f:
+            text = f.read()
+    except OSError:
+        return None
+    match = re.search(r"^Public headers:(.*?)(?:\n\s*\n|\Z)", text, re.M | re.S)
+    return set(re.findall(r"`([^`]+)`", match.group(1))) if match else None
+
+
 def owner(path):
     """The library folder a root-relative include path belongs to, or None."""
     for folder in FOLDERS:
@@ -54,7 +67,7 @@ def owner(path):
     return None
 
 
-def check_folder(root, folder):
+def check_folder(root, folder, public):
     folders, guarded = allowed_of(root, folder)
     errors = []
     for directory, _, files in os.walk(os.path.join(root, folder)):
@@ -74,6 +87,11 @@ def check_folder(root, folder):
                         if used and used not in folders:
                             errors.append(f"{where}: error: {folder}/ includes \"{target}\", but "
                                           f"its README does not allow {used}/")
+                        elif (used and used != folder and public.get(used) is not None and
+                              target[len(used) + 1:] not in public[used]):
+                            errors.append(f"{where}: error: {folder}/ includes \"{target}\", "
+                                          f"which is private to {used}/ (see its README's "
+                                          f"'Public headers')")
                     else:
                         head = target.split("/")[0]
                         if head in GUARDED and head not in guarded:
@@ -87,10 +105,11 @@ def main():
     parser.add_argument("--root", default=os.path.join(os.path.dirname(__file__), "..", ".."))
     args = parser.parse_args()
     root = os.path.abspath(args.root)
+    present = [f for f in FOLDERS if os.path.isdir(os.path.join(root, f))]
+    public = {f: public_headers_of(root, f) for f in present}
     errors = []
-    for folder in FOLDERS:
-        if os.path.isdir(os.path.join(root, folder)):
-            errors += check_folder(root, folder)
+    for folder in present:
+        errors += check_folder(root, folder, public)
     for error in errors:
         print(error)
     if errors:

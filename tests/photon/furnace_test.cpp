@@ -5,6 +5,7 @@
 
 #include "base/random.h"
 #include "photon_test_util.h"
+#include "renderer/shading/frame_shaders.h"
 
 namespace gonio {
 namespace {
@@ -118,29 +119,51 @@ TEST(MicroBrdf, SampledValueIsTheEvaluatedOne) {
     EXPECT_GT(specularDraws, 50000);
 }
 
+// The micro BRDF of a shape whose attributes are `a`, from the shaders that ship with gonio.
+MicroBrdf MicroBrdfOf(const Attributes& a, Diagnostics& diagnostics) {
+    sl::ShadingSystem shaders(diagnostics);
+    shaders.SetSearchPath(std::vector<std::string>{DefaultShaderFolder()});
+    auto surface = LoadShaderInstance(shaders, a.surface, sl::ShaderType::Surface, Imath::M44f(),
+                                      Declarations(), diagnostics);
+    EXPECT_TRUE(surface);
+    return surface ? MicroBrdfFromShader(*surface, a, diagnostics) : MicroBrdf{};
+}
+
+TypedParam Float(const char* name, double value) {
+    ParamDecl decl;
+    decl.name = name;
+    return TypedParam{decl, {value}, {}};
+}
+
+// kd, ks and the exponent come from the compiled shader's declared defaults (shaders/*.sl),
+// then from the RIB's values, then from Attribute "brdflight".
 TEST(MicroBrdf, ShaderDefaultsAndOverrides) {
     Diagnostics diagnostics;
     Attributes a;
     a.surface.name = "plastic";
-    MicroBrdf m = MicroBrdfFromAttributes(a, diagnostics);
+    MicroBrdf m = MicroBrdfOf(a, diagnostics);
     EXPECT_FLOAT_EQ(m.kd, 0.5f);
     EXPECT_FLOAT_EQ(m.ks, 0.5f);
     EXPECT_FLOAT_EQ(m.exponent, 10.0f);
     a.surface.params.push_back(Param{"float roughness", {0.25}, {}, false, {}});
     a.surface.params.push_back(Param{"Kd", {0.7}, {}, false, {}});
-    m = MicroBrdfFromAttributes(a, diagnostics);
+    m = MicroBrdfOf(a, diagnostics);
     EXPECT_FLOAT_EQ(m.kd, 0.7f);
     EXPECT_FLOAT_EQ(m.exponent, 4.0f);
-    a.user["brdflight"].push_back(Param{"uniform float exponent", {25}, {}, false, {}});
-    a.user["brdflight"].push_back(Param{"uniform float ks", {0.1}, {}, false, {}});
-    m = MicroBrdfFromAttributes(a, diagnostics);
+    a.user["brdflight"].Set(Float("exponent", 25), {});
+    a.user["brdflight"].Set(Float("ks", 0.1), {});
+    m = MicroBrdfOf(a, diagnostics);
     EXPECT_FLOAT_EQ(m.exponent, 25.0f);
     EXPECT_FLOAT_EQ(m.ks, 0.1f);
     a = Attributes();
     a.surface.name = "metal";
-    m = MicroBrdfFromAttributes(a, diagnostics);
+    m = MicroBrdfOf(a, diagnostics);
     EXPECT_FLOAT_EQ(m.kd, 0.0f);
     EXPECT_FLOAT_EQ(m.ks, 1.0f);
+    a.surface.name = "matte";
+    m = MicroBrdfOf(a, diagnostics);
+    EXPECT_FLOAT_EQ(m.kd, 1.0f);
+    EXPECT_FLOAT_EQ(m.ks, 0.0f);
     EXPECT_EQ(diagnostics.WarningCount(), 0);
 }
 

@@ -12,6 +12,7 @@
 
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
+#include "renderer/scene/unused_parameters.h"
 
 namespace gonio {
 namespace {
@@ -22,16 +23,19 @@ struct BuildResult {
     std::vector<Frame> frames;  // every Frame handed over at WorldEnd
 };
 
-// Parses `rib` (named test.rib) into a SceneBuilder, capturing the diagnostics in memory.
-BuildResult Build(const std::string& rib) {
+// Parses `rib` (named test.rib) into a SceneBuilder, capturing the diagnostics in memory; with
+// `reportUnused`, each frame's unread parameters are reported as after a render.
+BuildResult Build(const std::string& rib, bool reportUnused = false) {
     BuildResult result;
     char* buffer = nullptr;
     size_t size = 0;
     std::FILE* sink = open_memstream(&buffer, &size);
     {
         Diagnostics diagnostics(sink);
-        SceneBuilder builder("test.rib", diagnostics,
-                             [&](const Frame& frame) { result.frames.push_back(frame); });
+        SceneBuilder builder("test.rib", diagnostics, [&](const Frame& frame) {
+            result.frames.push_back(frame);
+            if (reportUnused) ReportUnusedParameters(frame, diagnostics);
+        });
         ParseRibString(rib, "test.rib", builder, diagnostics);
         builder.Finish(FileLoc{std::make_shared<const std::string>("test.rib"), 0, 0});
         result.errors = diagnostics.ErrorCount();
@@ -361,6 +365,42 @@ TEST(SceneBuilderFrames, MovingMeshesKeepTheirPositionsAtEachTime) {
     ASSERT_EQ(shape.deformPositions.size(), 2u);
     EXPECT_FLOAT_EQ(shape.deformPositions[0][2].z, 0);
     EXPECT_FLOAT_EQ(shape.deformPositions[1][2].z, 1);
+}
+
+// ---- parameters nobody read ------------------------------------------------------------------
+
+TEST(SceneBuilderUnused, UnreadOptionAndAttributeParametersAreReportedAtTheirLocation) {
+    const BuildResult r = Build(
+        "Option \"trace\" \"integer maxdeph\" [3]\n"
+        "WorldBegin\nAttribute \"user\" \"float unread\" [1]\nSphere 1 -1 1 360\nWorldEnd\n",
+        true);
+    EXPECT_EQ(r.messages,
+              "test.rib:1:16: warning: Option \"trace\" parameter \"maxdeph\" had no effect on "
+              "this frame\n"
+              "test.rib:3:18: warning: Attribute \"user\" parameter \"unread\" had no effect on "
+              "this frame\n");
+}
+
+TEST(SceneBuilderUnused, ReadParametersAreNotReported) {
+    const BuildResult r = Build(
+        "Option \"searchpath\" \"archive\" [\".\"]\n"
+        "WorldBegin\nAttribute \"identifier\" \"name\" [\"ball\"]\n"
+        "Attribute \"light\" \"shadows\" [\"on\"]\nLightSource \"distantlight\" 1\n"
+        "Sphere 1 -1 1 360\nWorldEnd\n",
+        true);
+    EXPECT_EQ(r.messages, "");
+    EXPECT_EQ(r.warnings, 0);
+}
+
+TEST(SceneBuilderUnused, DisplayParametersAreTyped) {
+    const BuildResult r = Build(
+        "Display \"x.exr\" \"openexr\" \"rgb\" \"exrpixeltype\" [\"half\"] \"bogus\" [1]\n"
+        "WorldBegin\nWorldEnd\n");
+    ASSERT_EQ(r.frames.size(), 1u);
+    const ParamDict& params = r.frames[0].options.displays.at(0).params;
+    EXPECT_EQ(params.GetString("exrpixeltype", ""), "half");
+    EXPECT_FALSE(params.Has("bogus"));
+    EXPECT_EQ(r.messages, "test.rib:1:57: warning: Display: unknown parameter \"bogus\" ignored\n");
 }
 
 }  // namespace
