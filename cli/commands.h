@@ -12,5 +12,6 @@ void AddCatribCommand(CLI::App& app, int* exitCode);
 void AddBrdfCommand(CLI::App& app, int* exitCode);
 void AddShaderCommand(CLI::App& app, int* exitCode);
 void AddShadeCommand(CLI::App& app, int* exitCode);
+void AddSpectralCommand(CLI::App& app, int* exitCode);
 
 }  // namespace gonio

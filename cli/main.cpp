@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     gonio::AddBrdfCommand(app, &exitCode);
     gonio::AddShaderCommand(app, &exitCode);
     gonio::AddShadeCommand(app, &exitCode);
+    gonio::AddSpectralCommand(app, &exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

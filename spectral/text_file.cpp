@@ -1,0 +1,58 @@
+#include "spectral/text_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "spectral/spectral_error.h"
+
+namespace gonio::spectral {
+
+std::vector<std::string> ReadTextLines(const std::string& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        FailAt(path, 0, "cannot read it: it is a directory");
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) FailAt(path, 0, std::string("cannot read it: ") + std::strerror(errno));
+    std::string text;
+    char buffer[1 << 14];
+    size_t got;
+    while ((got = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, got);
+    const bool failed = std::ferror(file);
+    std::fclose(file);
+    if (failed) FailAt(path, 0, "cannot read it: read error");
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return lines;
+}
+
+void WriteTextFileAtomically(const std::string& path, const std::string& text) {
+    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+    std::FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file) FailAt(path, 0, std::string("cannot write it: ") + std::strerror(errno));
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    const int writeErrno = errno;
+    const bool flushed = std::fflush(file) == 0;
+    const bool closed = std::fclose(file) == 0;
+    if (!written || !flushed || !closed) {
+        std::remove(temporary.c_str());
+        FailAt(path, 0,
+               std::string("cannot write it: ") + std::strerror(written ? errno : writeErrno));
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const int renameErrno = errno;
+        std::remove(temporary.c_str());
+        FailAt(path, 0, std::string("cannot write it: ") + std::strerror(renameErrno));
+    }
+}
+
+}  // namespace gonio::spectral

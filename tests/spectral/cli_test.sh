@@ -1,0 +1,26 @@
+#!/bin/sh
+# gonio spectral end to end: info of a named spectrum (D65's CIE 15 white point), the patch
+# table's rows, and bad input (an unknown name, a malformed file) as a located error, exit 1.
+set -u
+gonio=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+out=$("$gonio" spectral info D65) || fail "info D65 exited $?"
+echo "$out" | grep -q '^  xy        0.3127[0-9] 0.3290[0-9]$' || fail "D65 xy: $out"
+
+out=$("$gonio" spectral patches --lights F11) || fail "patches exited $?"
+for row in rgb bands-16 "svd-6 exact-direct" "eq. 6.9"; do
+    echo "$out" | grep -q "^F11 .*$row" || fail "no $row row: $out"
+done
+
+"$gonio" spectral info NOSUCHLIGHT >"$work/out" 2>&1
+[ $? -eq 1 ] || fail "an unknown name should exit 1"
+grep -q 'NOSUCHLIGHT' "$work/out" || fail "the error should name it: $(cat "$work/out")"
+
+printf '# a light\ncspec 400 700 100\n1\n2\nx\n' >"$work/bad.spd"
+"$gonio" spectral info "$work/bad.spd" >"$work/out" 2>&1
+[ $? -eq 1 ] || fail "a malformed file should exit 1"
+grep -q "bad.spd:5: error: " "$work/out" || fail "not located at line 5: $(cat "$work/out")"
+echo "spectral.cli: ok"
