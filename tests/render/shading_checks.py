@@ -42,6 +42,14 @@ class Frame:
         return [self.screen(px, py, (i + 0.5) / SUBSAMPLES, (j + 0.5) / SUBSAMPLES)
                 for i in range(SUBSAMPLES) for j in range(SUBSAMPLES)]
 
+    def rim(self, px, py, margin):
+        """Points `margin` pixels outside pixel (px, py), facing each row and column of its
+        subsamples and its corners: where an edge lies on the pixel's border they are across it."""
+        inside = [(i + 0.5) / SUBSAMPLES for i in range(SUBSAMPLES)]
+        outside = (-margin, 1 + margin)
+        return [self.screen(px, py, f, g) for f in outside for g in inside + list(outside)] + \
+            [self.screen(px, py, g, f) for f in outside for g in inside]
+
     def raster(self, x, y):
         """Continuous raster position of screen point (x, y)."""
         return (x + self.half) / self.pixel, (self.half - y) / self.pixel
@@ -205,6 +213,13 @@ SHADOW_LIGHTS = {
         f'"{k}" [{fmt(v) if isinstance(v, tuple) else v}]' for k, v in SPOT.items())),
 }
 SHADOW_FRAME = Frame(80, 2.5)  # pixels of 1/16: every edge of card and shadow is a pixel border
+# A camera sample may lie anywhere in its pixel, up to the border, and where a shadow edge lies
+# on the border its shadow ray grazes the card's edge. The floor point it starts from is known
+# to about an ulp of the camera distance (5: 4.8e-7, 1.1e-5 pixels on the shadow), so a sample
+# that close to the edge may fall either way. Such a pixel may be one sample off; an edge
+# misplaced by 0.01 pixel would move one sample in about 2.5 pixels of each edge.
+EDGE_MARGIN = 1e-4  # pixels
+MAX_GRAZING = 2  # pixels of a frame that may be one grazing sample off
 
 
 def in_occluder(x, y):
@@ -265,7 +280,7 @@ def expect_shadows_where_projected(b, me, kinds):
     failures = {}
     for kind in kinds:
         in_shadow = lit = 0
-        wrong = failures.setdefault(kind, [])
+        wrong, grazing = failures.setdefault(kind, []), []
         for (px, py), value in sorted(b.image(me, kind).pixels.items()):
             points = SHADOW_FRAME.subsamples(px, py)
             if any(in_occluder(x, y) for x, y in points):
@@ -282,9 +297,20 @@ def expect_shadows_where_projected(b, me, kinds):
             dark = samples[0][1]
             in_shadow += dark
             lit += not dark and want > 0.01
-            if not close(value[0], want, 0.01, 0.002 + 0.1 * spread):
+            tolerance = 0.002 + 0.1 * spread
+            if close(value[0], want, 0.01, tolerance):
+                continue
+            rim = SHADOW_FRAME.rim(px, py, EDGE_MARGIN)
+            on_edge = any(floor_radiance(kind, x, y)[1] != dark for x, y in rim)
+            one = sum(ci for ci, _ in samples) / len(samples) / len(points)
+            if on_edge and close(value[0], want + (one if dark else -one), 0.01, tolerance):
+                grazing.append(f"pixel ({px},{py}) is {value[0]:.4f}, one grazing sample "
+                               f"from {want:.4f}")
+            else:
                 wrong.append(f"pixel ({px},{py}) is {value[0]:.4f}, expected {want:.4f} "
                              f"({'in' if dark else 'out of'} the shadow)")
+        if len(grazing) > MAX_GRAZING:
+            wrong.extend(grazing)
         expect(in_shadow >= 200 and lit >= 800,
                f"{kind}: only {in_shadow} shadowed and {lit} lit pixels checked")
     report = [f"{kind}: {len(w)} wrong pixels, e.g.\n  " + "\n  ".join(w[:4])
