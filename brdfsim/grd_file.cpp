@@ -8,6 +8,8 @@
 #include <cstring>
 #include <vector>
 
+#include "base/limits.h"
+
 namespace gonio {
 
 namespace {
@@ -165,7 +167,8 @@ void ReadHeader(Reader& in, SplatSet& s, int* rings, int* rects, std::uint32_t* 
     s.photons = in.Value<std::uint64_t>("the photon count");
     s.mass = in.Value<double>("the normalisation");
     if (*flags & ~(kFlagIsotropic | kFlagBaked)) in.Fail("unknown flags");
-    if (s.ncomps < 1 || s.ncomps > 64) in.Fail("ncomps must be in 1..64");
+    if (s.ncomps < 1 || s.ncomps > kMaxColorComponents)
+        in.Fail("ncomps must be in 1.." + std::to_string(kMaxColorComponents));
     if (norm > 2) in.Fail("unknown norm code " + std::to_string(norm));
     if (horizon > 1) in.Fail("unknown horizon code " + std::to_string(horizon));
     if (!(s.params.radius > 0 && s.params.radius <= 1.5708)) in.Fail("radius out of (0, π/2]");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "base/limits.h"
 #include "base/math.h"
 
 namespace gonio {
@@ -115,8 +116,8 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
         std::uint64_t line = lineNumber_ + 1;
         while (p < end) {
             const char* q = p;
-            float scratch[64];
-            const int n = ParseNumbers(q, end, scratch, 64);
+            float scratch[kFirstColour + kMaxColorComponents];
+            const int n = ParseNumbers(q, end, scratch, kFirstColour + kMaxColorComponents);
             if (n == 0) {  // a blank line
                 p = q + 1;
                 ++line;
@@ -129,6 +130,11 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
                 throw PhotonMapError(path_ + ":" + std::to_string(line) +
                                      ": expected theta_in phi_in theta_out phi_out probability "
                                      "and at least one colour value");
+            }
+            if (n - kFirstColour > kMaxColorComponents) {
+                throw PhotonMapError(path_ + ":" + std::to_string(line) + ": expected at most " +
+                                     std::to_string(kMaxColorComponents) + " colour values, got " +
+                                     std::to_string(n - kFirstColour));
             }
             ncomps_ = n - kFirstColour;
             break;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "base/limits.h"
 #include "brdf_cli.h"
 #include "brdfsim/analytic_brdf.h"
 #include "brdfsim/baked_table.h"
@@ -31,7 +32,7 @@ void AddSynth(CLI::App& brdf, int* exitCode) {
                   "low-discrepancy points instead of independent random numbers");
     cmd->add_option("--components", options->ncomps, "colour values per photon")
         ->capture_default_str()
-        ->check(CLI::Range(1, 64));
+        ->check(CLI::Range(1, kMaxColorComponents));
     cmd->add_flag("--brdf-sampling", *brdfSampling,
                   "exits from the BRDF's importance sampling alone, as a tracer draws them");
     cmd->add_option("-o,--output", *out, "output photon map (.pm)")->required();

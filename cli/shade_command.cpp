@@ -10,6 +10,7 @@
 #include <memory>
 #include <sstream>
 
+#include "base/limits.h"
 #include "commands.h"
 #include "renderer/image/image_writer.h"
 #include "shaderlang/grid_shading.h"
@@ -192,7 +193,7 @@ void AddShadeCommand(CLI::App& app, int* exitCode) {
     cmd->add_option("-I", options->includeDirs, "Folder searched by #include");
     cmd->add_option("-D", options->defines, "Preprocessor definition NAME[=VALUE]");
     cmd->add_option("--ncomps", options->colorComponents, "Colour components (ColorSamples)")
-        ->check(CLI::Range(1, 64));
+        ->check(CLI::Range(1, kMaxColorComponents));
     cmd->callback([options, exitCode] { *exitCode = RunShade(*options); });
 }
 

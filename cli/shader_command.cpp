@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "base/limits.h"
 #include "commands.h"
 #include "shaderlang/shading_system.h"
 
@@ -71,7 +72,7 @@ void AddShaderCommand(CLI::App& app, int* exitCode) {
     cmd->add_option("-I", options->includeDirs, "Folder searched by #include");
     cmd->add_option("-D", options->defines, "Preprocessor definition NAME[=VALUE]");
     cmd->add_option("--ncomps", options->colorComponents, "Colour components (ColorSamples)")
-        ->check(CLI::Range(1, 64));
+        ->check(CLI::Range(1, kMaxColorComponents));
     cmd->add_flag("--code", options->code, "Print the compiled bytecode too");
     cmd->callback([options, exitCode] { *exitCode = RunShader(*options); });
 }

@@ -248,8 +248,9 @@ MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics)
         // Without a Surface the micro geometry is matte, as in an image render.
         ShaderInstance request = attributes.surface;
         if (!request.IsSet()) request = ShaderInstance{"matte", {}, {}, attributes.surface.loc};
-        const auto surface = LoadShaderInstance(shaders, request, sl::ShaderType::Surface,
-                                                Imath::M44f(), Declarations(), diagnostics);
+        const auto surface =
+            LoadShaderInstance(shaders, request, sl::ShaderType::Surface, Imath::M44f(),
+                               Declarations(), frame.options, diagnostics);
         const MicroBrdf brdf =
             surface ? MicroBrdfFromShader(*surface, attributes, diagnostics) : MicroBrdf{};
         return byState.emplace(&attributes, brdf).first->second;

@@ -6,6 +6,7 @@
 
 #include "base/math.h"
 #include "renderer/scene/scene_builder_state.h"
+#include "renderer/scene/scene_colors.h"
 #include "renderer/scene/standard_options.h"
 
 namespace gonio {
@@ -31,21 +32,23 @@ int SceneBuilder::MotionSampleIndex() {
 // ---- colour and shaders ---------------------------------------------------------------------
 
 void SceneBuilder::Color(const std::vector<float>& color, const FileLoc& loc) {
-    if (static_cast<int>(color.size()) != state_->options.colorComponents) {
-        diagnostics_.Error(loc, "Color needs " + std::to_string(state_->options.colorComponents) +
-                                    " numbers, got " + std::to_string(color.size()));
+    std::vector<float> components;
+    std::string error;
+    if (!SceneColorsFromNumbers(state_->options, color, 1, &components, &error)) {
+        diagnostics_.Error(loc, "Color: " + error);
         return;
     }
-    MutableAttributes().color = color;
+    MutableAttributes().color = components;
 }
 
 void SceneBuilder::Opacity(const std::vector<float>& opacity, const FileLoc& loc) {
-    if (static_cast<int>(opacity.size()) != state_->options.colorComponents) {
-        diagnostics_.Error(loc, "Opacity needs " + std::to_string(state_->options.colorComponents) +
-                                    " numbers, got " + std::to_string(opacity.size()));
+    std::vector<float> components;
+    std::string error;
+    if (!SceneColorsFromNumbers(state_->options, opacity, 1, &components, &error)) {
+        diagnostics_.Error(loc, "Opacity: " + error);
         return;
     }
-    MutableAttributes().opacity = opacity;
+    MutableAttributes().opacity = components;
 }
 
 void SceneBuilder::TextureCoordinates(const std::vector<float>& st8, const FileLoc& loc) {
@@ -56,9 +59,20 @@ void SceneBuilder::TextureCoordinates(const std::vector<float>& st8, const FileL
     MutableAttributes().textureCoordinates = st8;
 }
 
+// Under Option "spectral", a colour parameter may be RGB or name one spectrum
+// (scene_colors.h); its count then differs from the frame's components.
+bool SceneBuilder::IsSpectralColor(const Param& param) const {
+    if (state_->options.wavelengths.empty()) return false;
+    std::string unused;
+    const std::optional<ParamDecl> decl = declarations_.Resolve(param.token, &unused);
+    if (!decl || decl->type != ParamType::Color) return false;
+    return param.isString ? param.strings.size() == 1 : param.numbers.size() % 3 == 0;
+}
+
 void SceneBuilder::SetShader(ShaderInstance* shader, const std::string& name,
                              const ParamList& params, const FileLoc& loc) {
     for (const Param& p : params) {  // typed here so that undeclared tokens are reported early
+        if (IsSpectralColor(p)) continue;  // RGB or a spectrum: the shading stage converts it
         PrimVar var;
         TypeParam(p, declarations_, state_->options.colorComponents, diagnostics_, &var);
     }
@@ -200,6 +214,24 @@ void SceneBuilder::Attribute(const std::string& name, const ParamList& params, c
         if (TypeOptionParam("Attribute", name, p, &typed)) merged.Set(std::move(typed), p.loc);
     }
     if (name == "identifier") MutableAttributes().identifier = merged.GetString("name", "");
+    if (name == "spectral") SpectralAttribute(merged);
+}
+
+// Attribute "spectral" "string color" NAME | "string opacity" NAME: Color or Opacity as a named
+// spectrum or a spectrum file, at the frame's wavelengths (Option "spectral").
+void SceneBuilder::SpectralAttribute(const ParamDict& params) {
+    for (const char* which : {"color", "opacity"}) {
+        if (!params.Has(which)) continue;
+        std::vector<float> components;
+        std::string error;
+        if (!SceneColorFromSpectrum(state_->options, params.GetString(which, ""), &components,
+                                    &error)) {
+            diagnostics_.Error(params.Location(which), "Attribute \"spectral\": " + error);
+            continue;
+        }
+        (std::string(which) == "color" ? MutableAttributes().color : MutableAttributes().opacity) =
+            components;
+    }
 }
 
 void SceneBuilder::Basis(const RtBasis& ubasis, int ustep, const RtBasis& vbasis, int vstep,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/limits.h"
 #include "renderer/scene/scene_builder_state.h"
 #include "renderer/scene/standard_options.h"
 
@@ -198,12 +199,12 @@ void SceneBuilder::ColorSamples(const std::vector<float>& nRGB, const std::vecto
         diagnostics_.Error(loc, "ColorSamples needs two matrices of 3·n numbers each");
         return;
     }
-    const int n = static_cast<int>(nRGB.size() / 3);
-    state_->options.colorComponents = n;
-    state_->options.colorToRgb = nRGB;
-    state_->options.colorFromRgb = RGBn;
-    MutableAttributes().color.assign(n, 1.f);
-    MutableAttributes().opacity.assign(n, 1.f);
+    if (nRGB.size() / 3 > size_t(kMaxColorComponents)) {
+        diagnostics_.Error(loc, "ColorSamples: at most " + std::to_string(kMaxColorComponents) +
+                                    " colour components, got " + std::to_string(nRGB.size() / 3));
+        return;
+    }
+    SetColorComponents(static_cast<int>(nRGB.size() / 3), nRGB, RGBn, {});
 }
 
 void SceneBuilder::RelativeDetail(float, const FileLoc& loc) {
@@ -243,6 +244,7 @@ void SceneBuilder::Option(const std::string& name, const ParamList& params, cons
     }
     // The RIB front end follows the archive path itself (rib_session.cpp), before any target.
     if (name == "searchpath") merged.Has("archive");
+    if (name == "spectral") SpectralOption(merged, loc);
 }
 
 }  // namespace gonio

@@ -50,6 +50,9 @@ struct Options {
     std::vector<float> colorToRgb;
     // ColorSamples' RGBn: 3 rows of n, colour = Σ RGB[c]·row c. Empty: the colours are RGB.
     std::vector<float> colorFromRgb;
+    // Option "spectral" "basis" "sampled": the wavelength (nm) of each colour component.
+    // Empty: the components are RGB, or whatever ColorSamples made them.
+    std::vector<double> wavelengths;
     // Imager: the shader run over the filtered pixels (unset, or "null": none).
     ShaderInstance imager;
     std::string hider = "hidden";

@@ -203,6 +203,14 @@ class SceneBuilder : public RiTarget {
     void PushBlock(Block block, const FileLoc& loc);
     bool PopBlock(Block block, const char* request, const FileLoc& loc);
     void IgnoredRequest(const char* request, const FileLoc& loc);
+    // Option "spectral": the frame's colour components become samples of the spectrum
+    // (builder_spectral.cpp).
+    void SpectralOption(const ParamDict& params, const FileLoc& loc);
+    void SpectralAttribute(const ParamDict& params);
+    bool IsSpectralColor(const Param& param) const;
+    // Sets the colour components (and their RGB matrices) and resets Color and Opacity to 1.
+    void SetColorComponents(int n, std::vector<float> toRgb, std::vector<float> fromRgb,
+                            std::vector<double> wavelengths);
     void ConcatTransform(const M44f& m);
     void SetShader(ShaderInstance* shader, const std::string& name, const ParamList& params,
                    const FileLoc& loc);

@@ -57,6 +57,11 @@ constexpr StandardParam kStandardParams[] = {
     {"Attribute", "brdflight", "kd", "uniform float"},
     {"Attribute", "brdflight", "ks", "uniform float"},
     {"Attribute", "brdflight", "exponent", "uniform float"},
+    {"Option", "spectral", "basis", "uniform string"},
+    {"Option", "spectral", "range", "uniform float[2]"},
+    {"Option", "spectral", "step", "uniform float"},
+    {"Attribute", "spectral", "color", "uniform string"},
+    {"Attribute", "spectral", "opacity", "uniform string"},
     // Display driver parameters (image_writer.h); the request has no name of its own.
     {"Display", "", "compression", "uniform string"},
     {"Display", "", "exrpixeltype", "uniform string"},

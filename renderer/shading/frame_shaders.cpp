@@ -69,7 +69,8 @@ std::vector<std::string> ShaderSearchPath(const Frame& frame) {
 
 std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
     sl::ShadingSystem& system, const ShaderInstance& request, sl::ShaderType expected,
-    const M44f& currentFromShader, const Declarations& declarations, Diagnostics& diagnostics) {
+    const M44f& currentFromShader, const Declarations& declarations, const Options& options,
+    Diagnostics& diagnostics) {
     if (!request.IsSet()) return nullptr;
     std::shared_ptr<const sl::Shader> shader = system.Load(request.name, request.loc);
     if (!shader) return nullptr;
@@ -80,7 +81,8 @@ std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
         return nullptr;
     }
     auto instance = std::make_shared<sl::ShaderInstance>(shader);
-    ApplyRibParameters(*instance, request.params, declarations, currentFromShader, diagnostics);
+    ApplyRibParameters(*instance, request.params, declarations, options, currentFromShader,
+                       diagnostics);
     return instance;
 }
 
@@ -128,7 +130,7 @@ std::shared_ptr<sl::ShaderInstance> FrameShaders::Instance(const ShaderInstance&
     std::shared_ptr<sl::ShaderInstance>& instance = instances_[key];
     instance = LoadShaderInstance(*system_, request, expected,
                                   request.worldFromShader * CurrentFromWorld(), declarations_,
-                                  diagnostics_);
+                                  frame_.options, diagnostics_);
     return instance;
 }
 

@@ -91,6 +91,7 @@ std::vector<std::string> FrameTextureSearchPath(const Frame& frame);
 // default, the other errors give null, as does an unset request.
 std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
     sl::ShadingSystem& system, const ShaderInstance& request, sl::ShaderType expected,
-    const M44f& currentFromShader, const Declarations& declarations, Diagnostics& diagnostics);
+    const M44f& currentFromShader, const Declarations& declarations, const Options& options,
+    Diagnostics& diagnostics);
 
 }  // namespace gonio

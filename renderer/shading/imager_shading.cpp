@@ -222,8 +222,9 @@ bool ApplyImager(const Frame& frame, uint64_t seed, Image& image, Diagnostics& d
     sl::ShadingSystem system(diagnostics, frame.options.colorComponents);
     system.SetSearchPath(ShaderSearchPath(frame));
     // The imager's "shader" space is its current space: raster space, with nothing to move.
-    const std::shared_ptr<sl::ShaderInstance> instance = LoadShaderInstance(
-        system, request, sl::ShaderType::Imager, Imath::M44f(), Declarations(), diagnostics);
+    const std::shared_ptr<sl::ShaderInstance> instance =
+        LoadShaderInstance(system, request, sl::ShaderType::Imager, Imath::M44f(), Declarations(),
+                           frame.options, diagnostics);
     if (!instance) return false;
     instance->Specialize();  // before the threads share it
 

@@ -1,14 +1,17 @@
 #include "renderer/shading/rib_shader_parameters.h"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "renderer/scene/scene_colors.h"
+
 namespace gonio {
 
 bool ApplyRibParameters(sl::ShaderInstance& instance, const ParamList& params,
-                        const Declarations& declarations, const Imath::M44f& currentFromShader,
-                        Diagnostics& diagnostics) {
+                        const Declarations& declarations, const Options& options,
+                        const Imath::M44f& currentFromShader, Diagnostics& diagnostics) {
     const sl::Shader& shader = instance.Master();
     bool ok = true;
     for (const Param& param : params) {
@@ -62,6 +65,18 @@ bool ApplyRibParameters(sl::ShaderInstance& instance, const ParamList& params,
         bool set;
         if (p->type.base == sl::BaseType::String) {
             set = instance.SetParameter(bare, param.strings, &error);
+        } else if (p->type.base == sl::BaseType::Color) {
+            std::vector<float> values;
+            const std::vector<float> numbers(param.numbers.begin(), param.numbers.end());
+            set = param.isString
+                      ? param.strings.size() == 1 &&
+                            SceneColorFromSpectrum(options, param.strings[0], &values, &error)
+                      : SceneColorsFromNumbers(options, numbers, std::max(1, p->type.arrayLength),
+                                               &values, &error);
+            if (param.isString && param.strings.size() != 1 && error.empty())
+                error = "expected one spectrum name or file";
+            if (set) set = instance.SetParameter(bare, values, &error);
+            if (!set) error = "parameter '" + bare + "': " + error;
         } else {
             std::vector<float> values(param.numbers.begin(), param.numbers.end());
             if (p->type.IsPointLike() && values.size() % 3 == 0) {

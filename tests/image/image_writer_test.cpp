@@ -10,6 +10,8 @@
 #include <fstream>
 #include <limits>
 
+#include "tests/support/captured_diagnostics.h"
+
 namespace gonio {
 namespace {
 
@@ -66,26 +68,7 @@ class TempDir {
     fs::path path_;
 };
 
-// Collects what the writer reports.
-class CapturedDiagnostics {
-  public:
-    CapturedDiagnostics() : file_(std::tmpfile()), diagnostics_(file_) {}
-    ~CapturedDiagnostics() { std::fclose(file_); }
-    Diagnostics& Get() { return diagnostics_; }
-    std::string Text() {
-        std::fflush(file_);
-        std::rewind(file_);
-        std::string text;
-        char buffer[512];
-        size_t n;
-        while ((n = std::fread(buffer, 1, sizeof buffer, file_)) > 0) text.append(buffer, n);
-        return text;
-    }
-
-  private:
-    std::FILE* file_;
-    Diagnostics diagnostics_;
-};
+using test::CapturedDiagnostics;
 
 struct ReadBack {
     OIIO::ImageSpec spec;

@@ -124,7 +124,7 @@ MicroBrdf MicroBrdfOf(const Attributes& a, Diagnostics& diagnostics) {
     sl::ShadingSystem shaders(diagnostics);
     shaders.SetSearchPath(std::vector<std::string>{DefaultShaderFolder()});
     auto surface = LoadShaderInstance(shaders, a.surface, sl::ShaderType::Surface, Imath::M44f(),
-                                      Declarations(), diagnostics);
+                                      Declarations(), Options(), diagnostics);
     EXPECT_TRUE(surface);
     return surface ? MicroBrdfFromShader(*surface, a, diagnostics) : MicroBrdf{};
 }

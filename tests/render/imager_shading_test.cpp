@@ -18,6 +18,7 @@
 
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
+#include "tests/support/captured_diagnostics.h"
 
 namespace gonio {
 namespace {
@@ -78,17 +79,9 @@ Image TestImage() {
 // Everything Diagnostics printed while `run` ran.
 template <typename F>
 std::string Messages(F run) {
-    char* buffer = nullptr;
-    size_t size = 0;
-    std::FILE* sink = open_memstream(&buffer, &size);
-    {
-        Diagnostics diagnostics(sink);
-        run(diagnostics);
-    }
-    std::fclose(sink);
-    std::string text(buffer, size);
-    std::free(buffer);
-    return text;
+    test::CapturedDiagnostics diagnostics;
+    run(diagnostics.Get());
+    return diagnostics.Text();
 }
 
 TEST(ImagerShading, BackgroundCompositesUnderThePixels) {

@@ -10,6 +10,8 @@
 #include <memory>
 #include <string>
 
+#include "tests/support/captured_diagnostics.h"
+
 namespace gonio {
 namespace {
 
@@ -32,17 +34,9 @@ FileLoc Line(int line) { return FileLoc{std::make_shared<const std::string>("s.r
 
 // What ReportUnused prints for `dict`.
 std::string Unused(const ParamDict& dict) {
-    char* buffer = nullptr;
-    size_t size = 0;
-    std::FILE* sink = open_memstream(&buffer, &size);
-    {
-        Diagnostics diagnostics(sink);
-        dict.ReportUnused("Option \"trace\"", diagnostics);
-    }
-    std::fclose(sink);
-    std::string text(buffer, size);
-    std::free(buffer);
-    return text;
+    test::CapturedDiagnostics diagnostics;
+    dict.ReportUnused("Option \"trace\"", diagnostics.Get());
+    return diagnostics.Text();
 }
 
 TEST(ParamDict, TypedValuesByBareName) {

@@ -13,6 +13,7 @@
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
 #include "renderer/scene/unused_parameters.h"
+#include "tests/support/captured_diagnostics.h"
 
 namespace gonio {
 namespace {
@@ -27,11 +28,9 @@ struct BuildResult {
 // `reportUnused`, each frame's unread parameters are reported as after a render.
 BuildResult Build(const std::string& rib, bool reportUnused = false) {
     BuildResult result;
-    char* buffer = nullptr;
-    size_t size = 0;
-    std::FILE* sink = open_memstream(&buffer, &size);
+    test::CapturedDiagnostics captured;
     {
-        Diagnostics diagnostics(sink);
+        Diagnostics& diagnostics = captured.Get();
         SceneBuilder builder("test.rib", diagnostics, [&](const Frame& frame) {
             result.frames.push_back(frame);
             if (reportUnused) ReportUnusedParameters(frame, diagnostics);
@@ -41,9 +40,7 @@ BuildResult Build(const std::string& rib, bool reportUnused = false) {
         result.errors = diagnostics.ErrorCount();
         result.warnings = diagnostics.WarningCount();
     }
-    std::fclose(sink);
-    result.messages.assign(buffer, size);
-    std::free(buffer);
+    result.messages = captured.Text();
     return result;
 }
 

@@ -11,29 +11,11 @@
 #include "base/diagnostics.h"
 #include "shaderlang/shading_system.h"
 #include "shaderlang/simple_context.h"
+#include "tests/support/captured_diagnostics.h"
 
 namespace gonio::sl::testing {
 
-// Diagnostics written to a memory buffer.
-class CapturedDiagnostics {
-  public:
-    CapturedDiagnostics() : file_(open_memstream(&buffer_, &size_)), diagnostics_(file_) {}
-    ~CapturedDiagnostics() {
-        std::fclose(file_);
-        std::free(buffer_);
-    }
-    Diagnostics& Get() { return diagnostics_; }
-    std::string Text() {
-        std::fflush(file_);
-        return std::string(buffer_, size_);
-    }
-
-  private:
-    char* buffer_ = nullptr;
-    size_t size_ = 0;
-    std::FILE* file_;
-    Diagnostics diagnostics_;
-};
+using gonio::test::CapturedDiagnostics;
 
 inline std::shared_ptr<const Shader> Compile(const std::string& source, CapturedDiagnostics& d,
                                              int ncomps = 3) {

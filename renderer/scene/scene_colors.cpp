@@ -1,0 +1,50 @@
+#include "renderer/scene/scene_colors.h"
+
+#include "spectral/named_spectra.h"
+#include "spectral/spectral_error.h"
+
+namespace gonio {
+
+bool SceneColorsFromNumbers(const Options& options, const std::vector<float>& values, int count,
+                            std::vector<float>* out, std::string* error) {
+    const int n = options.colorComponents;
+    if (int(values.size()) == n * count) {
+        *out = values;
+        return true;
+    }
+    const bool spectral = !options.wavelengths.empty();
+    if (!spectral || int(values.size()) != 3 * count) {
+        *error = "expected " + std::to_string(n * count) + " numbers" +
+                 (spectral ? " (or " + std::to_string(3 * count) + " for RGB)" : "") + ", got " +
+                 std::to_string(values.size());
+        return false;
+    }
+    out->assign(size_t(n) * count, 0.0f);
+    for (int k = 0; k < count; ++k)
+        for (int c = 0; c < 3; ++c)
+            for (int i = 0; i < n; ++i)
+                (*out)[size_t(k) * n + i] +=
+                    values[3 * size_t(k) + c] * options.colorFromRgb[size_t(c) * n + i];
+    return true;
+}
+
+bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFile,
+                            std::vector<float>* out, std::string* error) {
+    if (options.wavelengths.empty()) {
+        *error = "a spectrum (\"" + nameOrFile +
+                 "\") needs Option \"spectral\" \"basis\" "
+                 "\"sampled\" before WorldBegin";
+        return false;
+    }
+    try {
+        const spectral::Spectrum spectrum = spectral::LookupSpectrum(nameOrFile);
+        out->clear();
+        for (double nm : options.wavelengths) out->push_back(float(spectrum.Evaluate(nm)));
+        return true;
+    } catch (const spectral::SpectralError& e) {
+        *error = e.what();
+        return false;
+    }
+}
+
+}  // namespace gonio

@@ -1,0 +1,156 @@
+// Option "spectral" end to end: a matte card facing the camera and a distant light shining
+// along the view (N·L = 1), so that every pixel is exactly Cs·Cl (matte.sl with Kd 1). Rendered
+// in process and read back, each pixel is compared with what the CIE colorimetry of spectral/
+// says the product spectrum looks like.
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/frame/frame_renderer.h"
+#include "renderer/rib/rib_parser.h"
+#include "renderer/scene/scene_builder.h"
+#include "spectral/colorimetry.h"
+#include "spectral/named_spectra.h"
+#include "tests/support/captured_diagnostics.h"
+
+namespace gonio {
+namespace {
+
+namespace fs = std::filesystem;
+using spectral::Rgb;
+using spectral::Xyz;
+
+struct Rendered {
+    std::string messages;
+    int errors = 0;
+    Rgb pixel = Rgb::Zero();  // the centre pixel
+};
+
+// Renders `options` + the card scene with `surface` (Color or Attribute lines) and `light`.
+Rendered Render(const std::string& options, const std::string& surface, const std::string& light) {
+    const fs::path dir = fs::temp_directory_path() / "gonio_spectral_render";
+    fs::create_directories(dir);
+    const std::string image = (dir / "card.exr").string();
+    const std::string rib =
+        options + "\nFormat 4 4 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n" + "Display \"" +
+        image + "\" \"openexr\" \"rgba\"\n" +
+        "Projection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n" + light + "\n" + surface +
+        "\nSurface \"matte\" \"Kd\" 1\n"
+        "Polygon \"P\" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]\nWorldEnd\n";
+    Rendered result;
+    test::CapturedDiagnostics captured;
+    {
+        Diagnostics& diagnostics = captured.Get();
+        SceneBuilder builder("card.rib", diagnostics, [&](const Frame& frame) {
+            RenderStats stats;
+            RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
+        });
+        ParseRibString(rib, "card.rib", builder, diagnostics);
+        builder.Finish(FileLoc{std::make_shared<const std::string>("card.rib"), 0, 0});
+        result.errors = diagnostics.ErrorCount();
+    }
+    result.messages = captured.Text();
+    auto in = OIIO::ImageInput::open(image);
+    if (!in) return result;
+    std::vector<float> pixels(4 * 4 * 4);
+    in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, pixels.data());
+    const float* centre = &pixels[(2 * 4 + 2) * 4];
+    result.pixel = Rgb(centre[0], centre[1], centre[2]);
+    fs::remove(image);
+    return result;
+}
+
+const char* const kSampled = "Option \"spectral\" \"basis\" \"sampled\"";
+const char* const kLightAlongView =
+    "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0]";
+
+// The XYZ of a display RGB, back in the scene's (equal-energy) white.
+Xyz SceneXyz(const Rgb& rgb, const spectral::SampledObserver& observer) {
+    const Xyz white = observer.cmf.rowwise().sum() / observer.cmf.row(1).sum();
+    return spectral::BradfordAdapt(spectral::LinearSrgbToXyz(rgb), spectral::SrgbWhite(), white);
+}
+
+// A white card under a white light is the same picture in RGB and in 81 samples, whether the
+// light's colour is left at its default, given as RGB (uplifted) or as the spectrum E.
+TEST(SpectralRender, NeutralSceneRendersAsInRgb) {
+    const Rendered rgb = Render("", "", kLightAlongView);
+    ASSERT_EQ(rgb.errors, 0) << rgb.messages;
+    EXPECT_NEAR(rgb.pixel[0], 1.0, 1e-5);
+    for (const char* light : {kLightAlongView,
+                              "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0] "
+                              "\"lightcolor\" [1 1 1]",
+                              "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0] "
+                              "\"lightcolor\" [\"E\"]"}) {
+        const Rendered sampled = Render(kSampled, "Color [1 1 1]", light);
+        ASSERT_EQ(sampled.errors, 0) << sampled.messages;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(sampled.pixel[c], rgb.pixel[c], 2e-5) << light;
+    }
+}
+
+// TCS09 (a strong red) under F11 (a three-band fluorescent lamp): the pixel is the product
+// spectrum's colour, whose chromaticity and luminance the colour tables give independently.
+TEST(SpectralRender, ASurfaceSpectrumUnderALightSpectrumHasTheProductsColour) {
+    const Rendered r = Render(kSampled, "Attribute \"spectral\" \"color\" [\"TCS09\"]",
+                              std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]");
+    ASSERT_EQ(r.errors, 0) << r.messages;
+    const spectral::SampledObserver observer =
+        spectral::SampleObserver(spectral::NamedObserver("CIE1931"), spectral::ReferenceGrid());
+    const Eigen::VectorXd light =
+        spectral::SampleSpectrum(spectral::NamedSpectrum("F11"), spectral::ReferenceGrid());
+    const Eigen::VectorXd surface =
+        spectral::SampleSpectrum(spectral::NamedSpectrum("TCS09"), spectral::ReferenceGrid());
+    const Xyz want =
+        spectral::Tristimulus(light.cwiseProduct(surface), observer) / observer.cmf.row(1).sum();
+    const Xyz got = SceneXyz(r.pixel, observer);
+    // The float pipeline and the space's white correction (at most 1e-4 a channel) bound these.
+    EXPECT_NEAR(got.y(), want.y(), 2e-4 * want.y() + 1e-6);
+    const Eigen::Vector2d xy = spectral::Chromaticity(got), wantXy = spectral::Chromaticity(want);
+    EXPECT_NEAR(xy.x(), wantXy.x(), 3e-4);
+    EXPECT_NEAR(xy.y(), wantXy.y(), 3e-4);
+}
+
+// What the RGB renderer gets wrong: the same scene with both spectra reduced to RGB first.
+TEST(SpectralRender, RgbOfTheSameSceneDiffers) {
+    const Rendered sampled = Render(kSampled, "Attribute \"spectral\" \"color\" [\"TCS09\"]",
+                                    std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]");
+    // Each spectrum's own RGB, as an RGB scene would give them: the light's display RGB and
+    // the surface's under the equal-energy white (its colour as reflectance).
+    const Rendered light =
+        Render(kSampled, "", std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]");
+    const Rendered surface =
+        Render(kSampled, "Attribute \"spectral\" \"color\" [\"TCS09\"]", kLightAlongView);
+    const Rgb rgbProduct = light.pixel.cwiseProduct(surface.pixel);
+    const spectral::SampledObserver observer =
+        spectral::SampleObserver(spectral::NamedObserver("CIE1931"), spectral::ReferenceGrid());
+    const Xyz white = SceneXyz(light.pixel, observer);
+    const double de =
+        spectral::Ciede2000(spectral::XyzToLab(SceneXyz(sampled.pixel, observer), white),
+                            spectral::XyzToLab(SceneXyz(rgbProduct, observer), white));
+    RecordProperty("rgb_vs_sampled_de2000", std::to_string(de));
+    EXPECT_GT(de, 2.0) << "TCS09 under F11: RGB products should miss the spectral answer";
+}
+
+TEST(SpectralRender, BadSpectraAreLocatedErrors) {
+    Rendered r = Render(kSampled, "Attribute \"spectral\" \"color\" [\"NOSUCH\"]", kLightAlongView);
+    EXPECT_EQ(r.errors, 1);
+    EXPECT_NE(r.messages.find("card.rib:"), std::string::npos) << r.messages;
+    EXPECT_NE(r.messages.find("NOSUCH"), std::string::npos) << r.messages;
+    r = Render("", "Attribute \"spectral\" \"color\" [\"TCS09\"]", kLightAlongView);
+    EXPECT_EQ(r.errors, 1);
+    EXPECT_NE(r.messages.find("needs Option \"spectral\""), std::string::npos) << r.messages;
+    r = Render("Option \"spectral\" \"basis\" \"sampled\" \"range\" [300 900]", "",
+               kLightAlongView);
+    EXPECT_GE(r.errors, 1) << "the observer's tables stop at 830 nm";
+    r = Render("Option \"spectral\" \"basis\" \"wavelets\"", "", kLightAlongView);
+    EXPECT_EQ(r.errors, 1);
+    EXPECT_NE(r.messages.find("basis \"wavelets\""), std::string::npos) << r.messages;
+}
+
+}  // namespace
+}  // namespace gonio
