@@ -1,5 +1,7 @@
 #include "renderer/photon/scene_bounds.h"
 
+#include "base/overloaded.h"
+
 namespace gonio {
 namespace {
 
@@ -30,25 +32,33 @@ float ScaledPad(float radius, const M44f& m) {
 }
 
 void ExtendByShape(const SceneShape& shape, const M44f& worldFromObject, Box3f* box) {
-    const ShapeGeometry& g = shape.geometry;
-    if (const auto* mesh = std::get_if<TriangleMesh>(&g)) {
-        ExtendByPoints(mesh->positions, 0, worldFromObject, box);
-    } else if (const auto* quadric = std::get_if<QuadricShape>(&g)) {
-        const Box3f b = quadric->quadric->Bounds();
-        std::vector<V3f> corners;
-        for (int i = 0; i < 8; ++i)
-            corners.emplace_back((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                                 (i & 4) ? b.max.z : b.min.z);
-        ExtendByPoints(corners, 0, worldFromObject, box);
-    } else if (const auto* cage = std::get_if<SubdivisionCage>(&g)) {
-        ExtendByPoints(cage->positions, 0, worldFromObject, box);
-    } else if (const auto* curves = std::get_if<CurveSet>(&g)) {
-        ExtendByPoints(curves->controlPoints, ScaledPad(MaxOf(curves->radii), worldFromObject),
-                       worldFromObject, box);
-    } else if (const auto* points = std::get_if<PointSet>(&g)) {
-        ExtendByPoints(points->centers, ScaledPad(MaxOf(points->radii), worldFromObject),
-                       worldFromObject, box);
-    }
+    std::visit(
+        Overloaded{
+            [&](const TriangleMesh& mesh) {
+                ExtendByPoints(mesh.positions, 0, worldFromObject, box);
+            },
+            [&](const QuadricShape& quadric) {
+                const Box3f b = quadric.quadric->Bounds();
+                std::vector<V3f> corners;
+                for (int i = 0; i < 8; ++i)
+                    corners.emplace_back((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                                         (i & 4) ? b.max.z : b.min.z);
+                ExtendByPoints(corners, 0, worldFromObject, box);
+            },
+            [&](const SubdivisionCage& cage) {
+                ExtendByPoints(cage.positions, 0, worldFromObject, box);
+            },
+            [&](const CurveSet& curves) {
+                ExtendByPoints(curves.controlPoints,
+                               ScaledPad(MaxOf(curves.radii), worldFromObject), worldFromObject,
+                               box);
+            },
+            [&](const PointSet& points) {
+                ExtendByPoints(points.centers, ScaledPad(MaxOf(points.radii), worldFromObject),
+                               worldFromObject, box);
+            },
+        },
+        shape.geometry);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "base/overloaded.h"
 #include "renderer/raytrace/motion.h"
 #include "renderer/raytrace/shape_evaluation.h"
 
@@ -221,6 +222,8 @@ struct RayScene::Impl {
     RTCGeometry MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage, const M44f& m);
     RTCGeometry MakeCurves(const CurveSet& curves, const M44f& m);
     RTCGeometry MakePoints(const PointSet& points, const M44f& m);
+    ObjectHit EvaluateSubdivision(const GeometryRecord& record, const RayHit& hit,
+                                  const V3f& objectP) const;
     // worldP: the hit point, which spaceFromWorld takes to the record's space.
     ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit, const V3f& worldP,
                              const M44f& spaceFromWorld) const;
@@ -425,31 +428,42 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
     record->shape = &shape;
     record->spaceFromObject = spaceFromObject;
     record->objectFromSpace = spaceFromObject.inverse();
-    RTCGeometry g = nullptr;
     const M44f& m = record->spaceFromObject;
-    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
-        if (mesh->TriangleCount() == 0) return;
-        record->meshVars = MeshPrimVars(*mesh);
-        record->vars = &record->meshVars;
-        g = MakeMesh(*mesh, m);
-        if (!shape.deformPositions.empty()) SetDeformationSteps(g, shape, m, 3);
-    } else if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry)) {
-        record->vars = &quadric->vars;
-        g = MakeQuadric(*record, *quadric);
-    } else if (const auto* cage = std::get_if<SubdivisionCage>(&shape.geometry)) {
-        if (cage->faceVertexCounts.empty()) return;
-        record->vars = &cage->vars;
-        g = MakeSubdivision(*record, *cage, m);
-        if (!shape.deformPositions.empty()) SetDeformationSteps(g, shape, m, 4);
-    } else if (const auto* curves = std::get_if<CurveSet>(&shape.geometry)) {
-        if (curves->segmentFirst.empty()) return;
-        record->vars = &curves->vars;
-        g = MakeCurves(*curves, m);
-    } else if (const auto* points = std::get_if<PointSet>(&shape.geometry)) {
-        if (points->centers.empty()) return;
-        record->vars = &points->vars;
-        g = MakePoints(*points, m);
-    }
+    // Null for an empty shape: nothing to attach.
+    const RTCGeometry g = std::visit(Overloaded{
+                                         [&](const TriangleMesh& mesh) -> RTCGeometry {
+                                             if (mesh.TriangleCount() == 0) return nullptr;
+                                             record->meshVars = MeshPrimVars(mesh);
+                                             record->vars = &record->meshVars;
+                                             RTCGeometry made = MakeMesh(mesh, m);
+                                             if (!shape.deformPositions.empty())
+                                                 SetDeformationSteps(made, shape, m, 3);
+                                             return made;
+                                         },
+                                         [&](const QuadricShape& quadric) -> RTCGeometry {
+                                             record->vars = &quadric.vars;
+                                             return MakeQuadric(*record, quadric);
+                                         },
+                                         [&](const SubdivisionCage& cage) -> RTCGeometry {
+                                             if (cage.faceVertexCounts.empty()) return nullptr;
+                                             record->vars = &cage.vars;
+                                             RTCGeometry made = MakeSubdivision(*record, cage, m);
+                                             if (!shape.deformPositions.empty())
+                                                 SetDeformationSteps(made, shape, m, 4);
+                                             return made;
+                                         },
+                                         [&](const CurveSet& curves) -> RTCGeometry {
+                                             if (curves.segmentFirst.empty()) return nullptr;
+                                             record->vars = &curves.vars;
+                                             return MakeCurves(curves, m);
+                                         },
+                                         [&](const PointSet& points) -> RTCGeometry {
+                                             if (points.centers.empty()) return nullptr;
+                                             record->vars = &points.vars;
+                                             return MakePoints(points, m);
+                                         },
+                                     },
+                                     shape.geometry);
     if (!g) return;
     const std::vector<PrimVar>& vars = record->vars->vars;
     for (size_t i = 0; i < vars.size(); ++i) {
@@ -582,22 +596,31 @@ bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar,
 
 ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
                                          const V3f& worldP, const M44f& spaceFromWorld) const {
-    const ShapeGeometry& geometry = record.shape->geometry;
-    if (const auto* mesh = std::get_if<TriangleMesh>(&geometry))
-        return EvaluateMesh(*mesh, hit.primID, hit.u, hit.v);
-    if (const auto* quadric = std::get_if<QuadricShape>(&geometry)) {
-        const PrimVar* normals =
-            record.quadricN >= 0 ? &record.vars->vars[record.quadricN] : nullptr;
-        return EvaluateQuadricAt(*quadric, hit.Ng, normals);  // Ng holds the object-space P
-    }
-    const V3f objectP =
-        TransformPoint(record.objectFromSpace, TransformPoint(spaceFromWorld, worldP));
-    const V3f objectNg = TransformNormal(record.spaceFromObject, hit.Ng);
-    if (const auto* curves = std::get_if<CurveSet>(&geometry))
-        return EvaluateCurve(*curves, hit.primID, hit.u, hit.v, objectP, objectNg);
-    if (std::holds_alternative<PointSet>(geometry))
-        return EvaluatePoint(hit.primID, objectP, objectNg);
-    // A subdivision surface: the limit surface through Embree, already in the record's space.
+    // The hit point and normal in object space, for the kinds Embree gives them in world space.
+    auto objectP = [&] {
+        return TransformPoint(record.objectFromSpace, TransformPoint(spaceFromWorld, worldP));
+    };
+    auto objectNg = [&] { return TransformNormal(record.spaceFromObject, hit.Ng); };
+    return std::visit(
+        Overloaded{
+            [&](const TriangleMesh& mesh) { return EvaluateMesh(mesh, hit.primID, hit.u, hit.v); },
+            [&](const QuadricShape& quadric) {
+                const PrimVar* normals =
+                    record.quadricN >= 0 ? &record.vars->vars[record.quadricN] : nullptr;
+                return EvaluateQuadricAt(quadric, hit.Ng, normals);  // Ng: the object-space P
+            },
+            [&](const CurveSet& curves) {
+                return EvaluateCurve(curves, hit.primID, hit.u, hit.v, objectP(), objectNg());
+            },
+            [&](const PointSet&) { return EvaluatePoint(hit.primID, objectP(), objectNg()); },
+            [&](const SubdivisionCage&) { return EvaluateSubdivision(record, hit, objectP()); },
+        },
+        record.shape->geometry);
+}
+
+// A subdivision surface: the limit surface through Embree, already in the record's space.
+ObjectHit RayScene::Impl::EvaluateSubdivision(const GeometryRecord& record, const RayHit& hit,
+                                              const V3f& objectP) const {
     float P[3], dPdu[3], dPdv[3];
     rtcInterpolate1(record.geometry, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX, 0, P, dPdu,
                     dPdv, 3);

@@ -74,6 +74,14 @@ class TypeChecker {
     std::unordered_map<Symbol*, Symbol*> externs_;  // extern alias -> the outer variable
 };
 
+// A type of `base`, an array of `length` when length > 0.
+inline TypeSpec MakeType(BaseType base, int length = 0) {
+    TypeSpec t;
+    t.base = base;
+    t.arrayLength = length;
+    return t;
+}
+
 // The TypeSpec of a signature code ('f', 'c', ...); arrayLength 0.
 TypeSpec TypeOfCode(char code);
 
