@@ -229,7 +229,7 @@ bool SceneBuilder::TypeOptionParam(const std::string& request, const std::string
     }
     PrimVar var;
     if (!TypeParam(typed, declarations_, ncomps, diagnostics_, &var)) return false;
-    *out = TypedParam{var.decl, param.numbers, param.strings};
+    *out = TypedParam{var.decl, param.numbers, param.strings, typed.token != param.token};
     return true;
 }
 

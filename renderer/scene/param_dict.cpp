@@ -47,9 +47,13 @@ void ParamDict::ReportUnused(const std::string& owner, Diagnostics& diagnostics)
     for (const Entry& entry : entries_) {
         if (entry.read->load(std::memory_order_relaxed)) continue;
         const std::string& name = entry.param.decl.name;
-        diagnostics.WarningOnce("unused " + entry.loc.ToString() + " " + owner + " " + name,
-                                entry.loc,
-                                owner + " parameter \"" + name + "\" had no effect on this frame");
+        const std::string key = "unused " + entry.loc.ToString() + " " + owner + " " + name;
+        const std::string message =
+            owner + " parameter \"" + name + "\" had no effect on this frame";
+        if (entry.param.standard)
+            diagnostics.NoteOnce(key, entry.loc, message);
+        else
+            diagnostics.WarningOnce(key, entry.loc, message);
     }
 }
 

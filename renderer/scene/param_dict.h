@@ -22,6 +22,10 @@ struct TypedParam {
     ParamDecl decl;
     std::vector<double> numbers;
     std::vector<std::string> strings;
+    // Typed by the standard table (standard_options.h): a parameter renderers know, which gonio
+    // may accept without using (Option "limits" "gridsize"), so leaving it unread is a note,
+    // not a warning.
+    bool standard = false;
 };
 
 class ParamDict {
@@ -49,7 +53,8 @@ class ParamDict {
     bool Has(const std::string& name) const { return Find(name) != nullptr; }
     bool Empty() const { return entries_.empty(); }
 
-    // Warnings, at their RIB locations, for the entries nobody read: `owner` names the request
+    // Warnings (notes for standard parameters), at their RIB locations, for the entries nobody
+    // read: `owner` names the request
     // ("Option \"trace\""). Copies of a dictionary share the marks (an Attribute read by any
     // shape counts as read), and a location is reported once, however many copies hold it.
     void ReportUnused(const std::string& owner, Diagnostics& diagnostics) const;

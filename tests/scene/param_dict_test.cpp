@@ -75,6 +75,16 @@ TEST(ParamDict, ReportsWhatNobodyRead) {
               "frame\n");
 }
 
+TEST(ParamDict, AnUnreadStandardParameterIsANote) {
+    ParamDict dict;
+    TypedParam gridsize = Number("gridsize", 256);
+    gridsize.standard = true;
+    dict.Set(gridsize, Line(2));
+    EXPECT_EQ(Unused(dict),
+              "s.rib:2: note: Option \"trace\" parameter \"gridsize\" had no effect on this "
+              "frame\n");
+}
+
 TEST(ParamDict, CopiesShareTheirReadMarks) {
     ParamDict dict;
     dict.Set(Number("bias", 0.01), Line(2));
