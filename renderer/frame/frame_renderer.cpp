@@ -350,7 +350,7 @@ std::vector<DisplaySpec> Displays(const Frame& frame, const RenderSettings& sett
                                   Diagnostics& diagnostics) {
     std::vector<DisplaySpec> displays;
     for (const DisplayRequest& d : frame.options.displays)
-        displays.push_back({d.name, d.type, d.mode, d.params, d.loc});
+        displays.push_back({d.name, d.type, d.mode, d.params, d.loc, frame.options.wavelengths});
     if (displays.empty()) {
         // RISpec's default display is the framebuffer; we have none, so name a file after the
         // scene.
@@ -379,7 +379,8 @@ std::vector<ShaderOutput> OutputsOfDisplays(const std::vector<DisplaySpec>& disp
     for (const DisplaySpec& display : displays) {
         std::string unused;
         if (!SelectDisplayChannels(display.mode, kStandard, unused).empty()) continue;
-        ShaderOutput output{display.mode};
+        // A spectral display writes Ci's components, one per wavelength (image_writer.h).
+        ShaderOutput output{display.mode == "spectral" ? "Ci" : display.mode};
         const bool seen = std::any_of(outputs.begin(), outputs.end(),
                                       [&](const ShaderOutput& o) { return o.name == output.name; });
         if (seen || !shading.DescribeOutput(&output)) continue;

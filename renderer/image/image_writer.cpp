@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -104,6 +105,13 @@ int FindChannel(const std::vector<std::string>& names, const std::string& name) 
 std::vector<OutputChannel> SelectOutputChannels(const std::string& mode,
                                                 const std::vector<std::string>& names,
                                                 std::string& error) {
+    if (mode == "spectral") {  // the RGB preview and alpha, then the spectrum (WriteDisplay)
+        std::vector<OutputChannel> channels = SelectOutputChannels("rgba", names, error);
+        const std::vector<OutputChannel> spectrum = SelectOutputChannels("Ci", names, error);
+        if (channels.empty() || spectrum.empty()) return {};
+        channels.insert(channels.end(), spectrum.begin(), spectrum.end());
+        return channels;
+    }
     std::vector<OutputChannel> channels;
     if (IsStandardMode(mode)) {
         for (char letter : mode) {
@@ -334,6 +342,36 @@ int QuantizeValue(float value, const Quantization& q, int x, int y, int channel)
     return int(std::lround(v));
 }
 
+// Fichet, Pacanowski and Wilkie 2021, "An OpenEXR Layout for Spectral Images" (JCGT 10(3)): an
+// emissive sample is the channel "S0.<wavelength>nm", written with a comma for the decimal
+// point ("S0.552,50nm").
+std::string SpectralChannelName(double nm) {
+    char text[32];
+    std::snprintf(text, sizeof text, "S0.%.2fnm", nm);
+    std::string name = text;
+    std::replace(name.begin(), name.end(), '.', ',');
+    name[2] = '.';  // "S0." keeps its dot: only the wavelength's decimal point is a comma
+    return name;
+}
+
+// Names the spectral channels of a "spectral" display (after the RGB preview and alpha) by
+// their wavelengths; false when the frame is not spectral or the file cannot hold them.
+bool NameSpectralChannels(const DisplaySpec& display, const std::string& format,
+                          std::vector<OutputChannel>& channels, std::string* error) {
+    const size_t preview = 4;
+    if (format != "openexr") {
+        *error = "Display mode \"spectral\" needs an OpenEXR file";
+        return false;
+    }
+    if (display.wavelengths.size() + preview != channels.size()) {
+        *error = "Display mode \"spectral\" needs Option \"spectral\" \"basis\" \"sampled\"";
+        return false;
+    }
+    for (size_t k = 0; k < display.wavelengths.size(); ++k)
+        channels[preview + k].name = SpectralChannelName(display.wavelengths[k]);
+    return true;
+}
+
 bool WriteDisplay(const DisplaySpec& display, const Image& image,
                   const std::vector<std::string>& channelNames, const Exposure& exposure,
                   const Quantization& colour, const Quantization& depth, Diagnostics& diagnostics) {
@@ -349,13 +387,19 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     if (channels.empty()) return fail(error);
 
     const std::string format = ChooseFormat(display, diagnostics);
+    if (display.mode == "spectral" && !NameSpectralChannels(display, format, channels, &error))
+        return fail(error);
     PixelType type = ChoosePixelType(display, format, channels, colour, depth, diagnostics);
     display.params.Has("origin");  // accepted: a window position only a framebuffer would use
     PixelData data =
         ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
     OIIO::TypeDesc fileFormat = type.half ? OIIO::TypeDesc::HALF : data.format;
-    error = WriteAtomically(format, display.name,
-                            MakeImageSpec(image, channels, fileFormat, display.params), data);
+    OIIO::ImageSpec spec = MakeImageSpec(image, channels, fileFormat, display.params);
+    if (display.mode == "spectral") {
+        spec.attribute("spectralLayoutVersion", "1.0");
+        spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
+    }
+    error = WriteAtomically(format, display.name, spec, data);
     display.params.ReportUnused("Display \"" + display.name + "\"", diagnostics);
     return error.empty() || fail(error);
 }

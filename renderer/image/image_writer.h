@@ -36,6 +36,8 @@ struct DisplaySpec {
     // reported as having had no effect.
     ParamDict params;
     FileLoc loc;
+    // The frame's wavelengths (Option "spectral"), which mode "spectral" writes as channels.
+    std::vector<double> wavelengths;
 };
 
 // Quantize "rgba"|"z" one min max ditheramplitude. one = 0 means float output.

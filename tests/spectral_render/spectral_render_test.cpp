@@ -32,14 +32,17 @@ struct Rendered {
     Rgb pixel = Rgb::Zero();  // the centre pixel
 };
 
-// Renders `options` + the card scene with `surface` (Color or Attribute lines) and `light`.
-Rendered Render(const std::string& options, const std::string& surface, const std::string& light) {
+// Renders `options` + the card scene with `surface` (Color or Attribute lines) and `light`,
+// into `image` (a scratch file when empty) with the Display mode `mode`.
+Rendered Render(const std::string& options, const std::string& surface, const std::string& light,
+                const std::string& mode = "rgba", std::string image = "") {
     const fs::path dir = fs::temp_directory_path() / "gonio_spectral_render";
     fs::create_directories(dir);
-    const std::string image = (dir / "card.exr").string();
+    const bool keep = !image.empty();
+    if (!keep) image = (dir / "card.exr").string();
     const std::string rib =
         options + "\nFormat 4 4 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n" + "Display \"" +
-        image + "\" \"openexr\" \"rgba\"\n" +
+        image + "\" \"openexr\" \"" + mode + "\"\n" +
         "Projection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n" + light + "\n" + surface +
         "\nSurface \"matte\" \"Kd\" 1\n"
         "Polygon \"P\" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]\nWorldEnd\n";
@@ -62,7 +65,7 @@ Rendered Render(const std::string& options, const std::string& surface, const st
     in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, pixels.data());
     const float* centre = &pixels[(2 * 4 + 2) * 4];
     result.pixel = Rgb(centre[0], centre[1], centre[2]);
-    fs::remove(image);
+    if (!keep) fs::remove(image);
     return result;
 }
 
@@ -134,6 +137,43 @@ TEST(SpectralRender, RgbOfTheSameSceneDiffers) {
                             spectral::XyzToLab(SceneXyz(rgbProduct, observer), white));
     RecordProperty("rgb_vs_sampled_de2000", std::to_string(de));
     EXPECT_GT(de, 2.0) << "TCS09 under F11: RGB products should miss the spectral answer";
+}
+
+// Display mode "spectral": the layout of Fichet et al. 2021: the RGB preview, alpha, and one
+// emissive channel "S0.<λ>nm" per sample (comma for the decimal point), each holding the
+// product of the two spectra at its wavelength.
+TEST(SpectralRender, SpectralDisplayWritesEverySample) {
+    const std::string image = (fs::temp_directory_path() / "gonio_spectral_card.exr").string();
+    const Rendered r =
+        Render(kSampled, "Attribute \"spectral\" \"color\" [\"TCS09\"]",
+               std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]", "spectral", image);
+    ASSERT_EQ(r.errors, 0) << r.messages;
+    auto in = OIIO::ImageInput::open(image);
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec spec = in->spec();
+    ASSERT_EQ(spec.nchannels, 4 + 81);
+    EXPECT_EQ(spec.channelnames[0], "R");
+    EXPECT_EQ(spec.channelnames[3], "A");
+    EXPECT_EQ(spec.channelnames[4], "S0.380,00nm");
+    EXPECT_EQ(spec.channelnames[4 + 34], "S0.550,00nm");
+    EXPECT_EQ(spec.get_string_attribute("spectralLayoutVersion"), "1.0");
+    std::vector<float> pixels(size_t(4 * 4 * spec.nchannels));
+    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
+    in->close();
+    const float* centre = &pixels[size_t(2 * 4 + 2) * spec.nchannels];
+    const spectral::Spectrum f11 = spectral::NamedSpectrum("F11");
+    const spectral::Spectrum tcs09 = spectral::NamedSpectrum("TCS09");
+    for (int k : {0, 34, 80}) {
+        const double nm = 380 + 5 * k;
+        EXPECT_NEAR(centre[4 + k], f11.Evaluate(nm) * tcs09.Evaluate(nm), 1e-6) << nm;
+    }
+    EXPECT_FLOAT_EQ(centre[0], float(r.pixel[0])) << "the preview is the rgba image";
+    fs::remove(image);
+    // Without Option "spectral" there is nothing to write: a located error, no file.
+    const Rendered rgb = Render("", "", kLightAlongView, "spectral", image);
+    EXPECT_EQ(rgb.errors, 1);
+    EXPECT_NE(rgb.messages.find("needs Option \"spectral\""), std::string::npos) << rgb.messages;
+    EXPECT_FALSE(fs::exists(image));
 }
 
 TEST(SpectralRender, BadSpectraAreLocatedErrors) {
