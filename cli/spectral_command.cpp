@@ -17,6 +17,7 @@
 #include "spectral/named_spectra.h"
 #include "spectral/patch_analysis.h"
 #include "spectral/spectral_error.h"
+#include "spectral_cli.h"
 
 namespace gonio {
 namespace {
@@ -69,17 +70,14 @@ void PrintRow(const std::string& light, const RepresentationError& e, const std:
                 e.twoBounce.mean, e.twoBounce.max, note.empty() ? "" : "  ", note.c_str());
 }
 
-void RunPatches(const std::string& lightList, double targetDe) {
-    const std::vector<std::string> lights = SplitCommas(lightList);
-    if (lights.empty()) throw SpectralError("--lights names no light");
-    const std::vector<PatchScene> scenes = TestColourScenes(lights);
+}  // namespace
+
+void PrintRepresentationErrors(const std::vector<std::string>& lights,
+                               const std::vector<PatchScene>& scenes, double targetDe) {
     const int bandsK = SmallestK(scenes, RepresentationKind::Bands, targetDe);
     const int svdK = SmallestK(scenes, RepresentationKind::SvdExactDirect, targetDe);
-    std::printf(
-        "CIE test colours TCS01-TCS14; reference: 81 samples at 5 nm, 380-780 nm; CIE 1931 2°.\n"
-        "ΔE2000 in CIELAB relative to each light's white; two-bounce: all 196 ordered pairs.\n"
-        "k: the smallest meeting mean ΔE2000 ≤ %g (one- and two-bounce, every light).\n\n",
-        targetDe);
+    std::printf("k: the smallest meeting mean ΔE2000 ≤ %g (one- and two-bounce, every light).\n\n",
+                targetDe);
     std::printf("%-10s %-22s %8s %8s %10s %8s\n", "light", "representation", "1b mean", "1b max",
                 "2b mean", "2b max");
     const int most = MaxK(scenes.front(), RepresentationKind::SvdExactDirect);
@@ -108,8 +106,20 @@ void RunPatches(const std::string& lightList, double targetDe) {
     }
 }
 
-// Runs `body`, turning an error into its message and exit status 1.
-void Guarded(int* exitCode, const std::function<void()>& body) {
+namespace {
+
+void RunPatches(const std::string& lightList, double targetDe) {
+    const std::vector<std::string> lights = SplitCommas(lightList);
+    if (lights.empty()) throw SpectralError("--lights names no light");
+    std::printf(
+        "CIE test colours TCS01-TCS14; reference: 81 samples at 5 nm, 380-780 nm; CIE 1931 2°.\n"
+        "ΔE2000 in CIELAB relative to each light's white; two-bounce: all 196 ordered pairs.\n");
+    PrintRepresentationErrors(lights, TestColourScenes(lights), targetDe);
+}
+
+}  // namespace
+
+void RunSpectralGuarded(int* exitCode, const std::function<void()>& body) {
     try {
         body();
         *exitCode = 0;
@@ -124,8 +134,6 @@ void Guarded(int* exitCode, const std::function<void()>& body) {
     }
 }
 
-}  // namespace
-
 void AddSpectralCommand(CLI::App& app, int* exitCode) {
     CLI::App* command =
         app.add_subcommand("spectral", "Spectral colour: spectra, colorimetry, representations");
@@ -138,7 +146,7 @@ void AddSpectralCommand(CLI::App& app, int* exitCode) {
                      "a named spectrum (D65, A, F1..F12, TCS01..TCS15, CIE1931, blackbody:6500, "
                      "...) or a file (.sp/.cmf CGATS, or the thesis's cspec/curve format)")
         ->required();
-    info->callback([name, exitCode] { Guarded(exitCode, [&] { RunInfo(*name); }); });
+    info->callback([name, exitCode] { RunSpectralGuarded(exitCode, [&] { RunInfo(*name); }); });
 
     CLI::App* patches = command->add_subcommand(
         "patches", "Measure rgb, bands-k and svd-k on the CIE test colours TCS01-14 (ΔE2000)");
@@ -149,8 +157,10 @@ void AddSpectralCommand(CLI::App& app, int* exitCode) {
     patches->add_option("--target-de", *target, "the mean ΔE2000 the smallest k must meet")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
-    patches->callback(
-        [lights, target, exitCode] { Guarded(exitCode, [&] { RunPatches(*lights, *target); }); });
+    patches->callback([lights, target, exitCode] {
+        RunSpectralGuarded(exitCode, [&] { RunPatches(*lights, *target); });
+    });
+    AddSpectralAnalyzeCommand(*command, exitCode);
 }
 
 }  // namespace gonio

@@ -1,8 +1,10 @@
 #!/bin/sh
 # gonio spectral end to end: info of a named spectrum (D65's CIE 15 white point), the patch
-# table's rows, and bad input (an unknown name, a malformed file) as a located error, exit 1.
+# table's rows, analyze on a scene's own spectra, and bad input (an unknown name, a malformed
+# file, a scene without Option "spectral") as a located error, exit 1.
 set -u
 gonio=$1
+ribs=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -23,4 +25,13 @@ printf '# a light\ncspec 400 700 100\n1\n2\nx\n' >"$work/bad.spd"
 "$gonio" spectral info "$work/bad.spd" >"$work/out" 2>&1
 [ $? -eq 1 ] || fail "a malformed file should exit 1"
 grep -q "bad.spd:5: error: " "$work/out" || fail "not located at line 5: $(cat "$work/out")"
+out=$("$gonio" spectral analyze "$ribs/tcs_f11.rib") || fail "analyze exited $?"
+echo "$out" | grep -q '1 light(s), 8 surface colour(s)' || fail "analyze's scene: $out"
+for row in rgb "bands-[0-9]" "svd-[0-9]* exact-direct" "svd-[0-9]* eq. 6.9"; do
+    echo "$out" | grep -q "^distantlight 1 *$row" || fail "analyze: no $row row: $out"
+done
+printf 'WorldBegin\nLightSource "distantlight" 1\nSphere 1 -1 1 360\nWorldEnd\n' >"$work/rgb.rib"
+"$gonio" spectral analyze "$work/rgb.rib" >"$work/out" 2>&1
+[ $? -eq 1 ] || fail "analyze of an RGB scene should exit 1"
+grep -q 'needs Option "spectral"' "$work/out" || fail "analyze should say why: $(cat "$work/out")"
 echo "spectral.cli: ok"
