@@ -62,7 +62,7 @@ void SceneBuilder::TextureCoordinates(const std::vector<float>& st8, const FileL
 // Under Option "spectral", a colour parameter may be RGB or name one spectrum
 // (scene_colors.h); its count then differs from the frame's components.
 bool SceneBuilder::IsSpectralColor(const Param& param) const {
-    if (state_->options.wavelengths.empty()) return false;
+    if (state_->options.wavelengths.empty() && !state_->options.spectraAsRgb) return false;
     std::string unused;
     const std::optional<ParamDecl> decl = declarations_.Resolve(param.token, &unused);
     if (!decl || decl->type != ParamType::Color) return false;

@@ -5,7 +5,8 @@
 // "sampled": one colour component per wavelength of the range (81 at 5 nm over 380-780 nm by
 // default), with ColorSamples' matrices from spectral/render_color_space.h, so that every
 // shader, photon map and .grd carries spectra unchanged. "rgb": three components, as without
-// the option. The error of either is measured by `gonio spectral patches`.
+// the option, and a colour given as a spectrum is reduced to its RGB, as an RGB renderer does. The
+// error of either is measured by `gonio spectral patches`.
 
 #include "base/limits.h"
 #include "renderer/scene/scene_builder_state.h"
@@ -20,6 +21,7 @@ void SceneBuilder::SetColorComponents(int n, std::vector<float> toRgb, std::vect
     state_->options.colorToRgb = std::move(toRgb);
     state_->options.colorFromRgb = std::move(fromRgb);
     state_->options.wavelengths = std::move(wavelengths);
+    state_->options.spectraAsRgb = false;
     MutableAttributes().color.assign(n, 1.f);
     MutableAttributes().opacity.assign(n, 1.f);
 }
@@ -28,6 +30,7 @@ void SceneBuilder::SpectralOption(const ParamDict& params, const FileLoc& loc) {
     const std::string basis = params.GetString("basis", "sampled");
     if (basis == "rgb") {
         SetColorComponents(3, {}, {}, {});
+        state_->options.spectraAsRgb = true;
         return;
     }
     if (basis != "sampled") {

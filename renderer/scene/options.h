@@ -53,6 +53,9 @@ struct Options {
     // Option "spectral" "basis" "sampled": the wavelength (nm) of each colour component.
     // Empty: the components are RGB, or whatever ColorSamples made them.
     std::vector<double> wavelengths;
+    // Option "spectral" "basis" "rgb": colours given as spectra are reduced to their RGB first,
+    // as an RGB renderer must (the RGB image of thesis fig. 6.5).
+    bool spectraAsRgb = false;
     // Imager: the shader run over the filtered pixels (unset, or "null": none).
     ShaderInstance imager;
     std::string hider = "hidden";

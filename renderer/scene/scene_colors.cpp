@@ -1,6 +1,7 @@
 #include "renderer/scene/scene_colors.h"
 
 #include "spectral/named_spectra.h"
+#include "spectral/render_color_space.h"
 #include "spectral/spectral_error.h"
 
 namespace gonio {
@@ -28,8 +29,33 @@ bool SceneColorsFromNumbers(const Options& options, const std::vector<float>& va
     return true;
 }
 
+namespace {
+
+// The RGB of a spectrum as the sampled colour space displays it (render_color_space.h): what an
+// RGB renderer is given for it, a light's colour and a reflectance alike.
+std::vector<float> RgbOfSpectrum(const spectral::Spectrum& spectrum) {
+    static const spectral::RenderColorSpace space =
+        spectral::SampledColorSpace(spectral::ReferenceGrid());
+    const std::vector<double> samples = spectrum.Sample(space.grid);
+    std::vector<float> rgb(3, 0.0f);
+    for (size_t i = 0; i < samples.size(); ++i)
+        for (int c = 0; c < 3; ++c) rgb[c] += float(samples[i]) * space.toRgb[3 * i + c];
+    return rgb;
+}
+
+}  // namespace
+
 bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFile,
                             std::vector<float>* out, std::string* error) {
+    if (options.spectraAsRgb) {
+        try {
+            *out = RgbOfSpectrum(spectral::LookupSpectrum(nameOrFile));
+            return true;
+        } catch (const spectral::SpectralError& e) {
+            *error = e.what();
+            return false;
+        }
+    }
     if (options.wavelengths.empty()) {
         *error = "a spectrum (\"" + nameOrFile +
                  "\") needs Option \"spectral\" \"basis\" "

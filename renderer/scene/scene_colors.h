@@ -17,8 +17,9 @@ bool SceneColorsFromNumbers(const Options& options, const std::vector<float>& va
                             std::vector<float>* out, std::string* error);
 
 // A named spectrum ("F11", "TCS09", "blackbody:3200") or a spectrum file, at the frame's
-// wavelengths; false (with *error, naming the file and line for a bad file) when the frame is
-// not spectral or the spectrum cannot be read or does not cover them.
+// wavelengths (under "basis" "rgb": its RGB, as an RGB renderer is given it); false (with *error,
+// naming the file and line for a bad file) when the frame is not spectral or the spectrum
+// cannot be read or does not cover them.
 bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFile,
                             std::vector<float>* out, std::string* error);
 

@@ -137,6 +137,13 @@ TEST(SpectralRender, RgbOfTheSameSceneDiffers) {
                             spectral::XyzToLab(SceneXyz(rgbProduct, observer), white));
     RecordProperty("rgb_vs_sampled_de2000", std::to_string(de));
     EXPECT_GT(de, 2.0) << "TCS09 under F11: RGB products should miss the spectral answer";
+    // "basis" "rgb" reduces each spectrum to exactly that RGB and multiplies: the RGB renderer.
+    const Rendered rgb = Render("Option \"spectral\" \"basis\" \"rgb\"",
+                                "Attribute \"spectral\" \"color\" [\"TCS09\"]",
+                                std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]");
+    ASSERT_EQ(rgb.errors, 0) << rgb.messages;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(rgb.pixel[c], rgbProduct[c], 1e-5 + 1e-4 * rgbProduct[c]);
 }
 
 // Display mode "spectral": the layout of Fichet et al. 2021: the RGB preview, alpha, and one
