@@ -48,13 +48,8 @@ Spectrum LightSpectrum(const Frame& frame, const SceneLight& light,
     for (const Param& p : light.light.shader.params) {
         if (TokenName(p.token) != "lightcolor") continue;
         std::string error;
-        const bool ok =
-            p.isString ? p.strings.size() == 1 &&
-                             SceneColorFromSpectrum(frame.options, p.strings[0], &colour, &error)
-                       : SceneColorsFromNumbers(
-                             frame.options, std::vector<float>(p.numbers.begin(), p.numbers.end()),
-                             1, &colour, &error);
-        if (!ok) throw spectral::SpectralError(p.loc.ToString() + ": error: " + error);
+        if (!SceneColorsFromParam(frame.options, p, 1, &colour, &error))
+            throw spectral::SpectralError(p.loc.ToString() + ": error: " + error);
     }
     return OnGrid(grid, colour);
 }

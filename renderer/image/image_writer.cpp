@@ -390,7 +390,7 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     if (display.mode == "spectral" && !NameSpectralChannels(display, format, channels, &error))
         return fail(error);
     PixelType type = ChoosePixelType(display, format, channels, colour, depth, diagnostics);
-    display.params.Has("origin");  // accepted: a window position only a framebuffer would use
+    display.params.MarkRead("origin");  // accepted: a window position only a framebuffer uses
     PixelData data =
         ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
     OIIO::TypeDesc fileFormat = type.half ? OIIO::TypeDesc::HALF : data.format;

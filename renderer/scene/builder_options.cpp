@@ -243,7 +243,7 @@ void SceneBuilder::Option(const std::string& name, const ParamList& params, cons
         if (TypeOptionParam("Option", name, p, &typed)) merged.Set(std::move(typed), p.loc);
     }
     // The RIB front end follows the archive path itself (rib_session.cpp), before any target.
-    if (name == "searchpath") merged.Has("archive");
+    if (name == "searchpath") merged.MarkRead("archive");
     if (name == "spectral") SpectralOption(merged, loc);
 }
 

@@ -51,6 +51,9 @@ class ParamDict {
     // The first value of the string entry `name`; `fallback` if there is none.
     std::string GetString(const std::string& name, const std::string& fallback) const;
     bool Has(const std::string& name) const { return Find(name) != nullptr; }
+    // Marks `name` as read by a reader outside the frame's stages (the RIB front end follows
+    // the archive path itself), so that it is not reported as unused.
+    void MarkRead(const std::string& name) const { Find(name); }
     bool Empty() const { return entries_.empty(); }
 
     // Warnings (notes for standard parameters), at their RIB locations, for the entries nobody

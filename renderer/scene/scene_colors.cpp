@@ -73,4 +73,17 @@ bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFil
     }
 }
 
+bool SceneColorsFromParam(const Options& options, const Param& param, int count,
+                          std::vector<float>* out, std::string* error) {
+    if (!param.isString)
+        return SceneColorsFromNumbers(
+            options, std::vector<float>(param.numbers.begin(), param.numbers.end()), count, out,
+            error);
+    if (param.strings.size() != 1) {
+        *error = "expected one spectrum name or file";
+        return false;
+    }
+    return SceneColorFromSpectrum(options, param.strings[0], out, error);
+}
+
 }  // namespace gonio

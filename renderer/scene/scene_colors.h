@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/rib/param_list.h"
 #include "renderer/scene/options.h"
 
 namespace gonio {
@@ -22,5 +23,10 @@ bool SceneColorsFromNumbers(const Options& options, const std::vector<float>& va
 // cannot be read or does not cover them.
 bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFile,
                             std::vector<float>* out, std::string* error);
+
+// A colour parameter as the RIB gives it: `count` colours of numbers (SceneColorsFromNumbers)
+// or one spectrum name or file (SceneColorFromSpectrum).
+bool SceneColorsFromParam(const Options& options, const Param& param, int count,
+                          std::vector<float>* out, std::string* error);
 
 }  // namespace gonio

@@ -67,15 +67,9 @@ bool ApplyRibParameters(sl::ShaderInstance& instance, const ParamList& params,
             set = instance.SetParameter(bare, param.strings, &error);
         } else if (p->type.base == sl::BaseType::Color) {
             std::vector<float> values;
-            const std::vector<float> numbers(param.numbers.begin(), param.numbers.end());
-            set = param.isString
-                      ? param.strings.size() == 1 &&
-                            SceneColorFromSpectrum(options, param.strings[0], &values, &error)
-                      : SceneColorsFromNumbers(options, numbers, std::max(1, p->type.arrayLength),
-                                               &values, &error);
-            if (param.isString && param.strings.size() != 1 && error.empty())
-                error = "expected one spectrum name or file";
-            if (set) set = instance.SetParameter(bare, values, &error);
+            set = SceneColorsFromParam(options, param, std::max(1, p->type.arrayLength), &values,
+                                       &error) &&
+                  instance.SetParameter(bare, values, &error);
             if (!set) error = "parameter '" + bare + "': " + error;
         } else {
             std::vector<float> values(param.numbers.begin(), param.numbers.end());
