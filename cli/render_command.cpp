@@ -10,7 +10,7 @@
 #include "renderer/frame/frame_renderer.h"
 #include "renderer/photon/photon_frame.h"
 #include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_builder.h"
+#include "renderer/scene/scene_file.h"
 #include "renderer/scene/unused_parameters.h"
 
 namespace gonio {
@@ -33,6 +33,20 @@ void PrintStats(const Frame& frame, const RenderStats& stats) {
                  static_cast<unsigned long long>(stats.cameraRays),
                  static_cast<unsigned long long>(stats.raysTraced),
                  stats.seconds > 0 ? stats.raysTraced / stats.seconds * 1e-6 : 0.0);
+}
+
+// The scene file; standard input can be read only once, and a scene with bands is read twice.
+RibReader ReaderOf(const std::string& scene, Diagnostics& reported) {
+    auto reads = std::make_shared<int>(0);
+    return [scene, reads, &reported](RiTarget& target, Diagnostics& diagnostics) {
+        if (scene == "-" && (*reads)++ > 0) {
+            reported.Error(FileLoc{std::make_shared<const std::string>("<stdin>"), 0, 0},
+                           "a frame with Option \"spectral\" \"basis\" \"bands\" is read "
+                           "twice, and standard input only once: give the scene as a file");
+            return;
+        }
+        ParseRibFile(scene, target, diagnostics);
+    };
 }
 
 int RunRender(const RenderOptions& options) {
@@ -68,9 +82,7 @@ int RunRender(const RenderOptions& options) {
         }
         ReportUnusedParameters(frame, diagnostics);
     };
-    SceneBuilder builder(options.scene, diagnostics, renderFrame);
-    ParseRibFile(options.scene, builder, diagnostics);
-    builder.Finish(FileLoc{std::make_shared<const std::string>(options.scene), 0, 0});
+    BuildScene(options.scene, ReaderOf(options.scene, diagnostics), diagnostics, renderFrame);
     if (outputFailed) return 2;
     return diagnostics.ErrorCount() > 0 ? 1 : 0;
 }

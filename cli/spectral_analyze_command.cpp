@@ -9,10 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/rib/declarations.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
-#include "renderer/scene/scene_colors.h"
+#include "renderer/scene/scene_spectra.h"
 #include "spectral/named_spectra.h"
 #include "spectral/spectral_error.h"
 #include "spectral_cli.h"
@@ -37,66 +36,28 @@ Frame FirstFrame(const std::string& scene) {
     return *first;
 }
 
-Spectrum OnGrid(const spectral::WavelengthGrid& grid, const std::vector<float>& samples) {
-    return Spectrum::OnGrid(grid, std::vector<double>(samples.begin(), samples.end()));
-}
-
-// A light source's colour: its "lightcolor" as the scene gives it, else white.
-Spectrum LightSpectrum(const Frame& frame, const SceneLight& light,
-                       const spectral::WavelengthGrid& grid) {
-    std::vector<float> colour(frame.options.wavelengths.size(), 1.0f);
-    for (const Param& p : light.light.shader.params) {
-        if (TokenName(p.token) != "lightcolor") continue;
-        std::string error;
-        if (!SceneColorsFromParam(frame.options, p, 1, &colour, &error))
-            throw spectral::SpectralError(p.loc.ToString() + ": error: " + error);
-    }
-    return OnGrid(grid, colour);
-}
-
-// The distinct Color of the frame's shapes.
-std::vector<Spectrum> SurfaceSpectra(const Frame& frame, const spectral::WavelengthGrid& grid) {
-    std::vector<std::vector<float>> seen;
-    auto add = [&](const Attributes& attributes) {
-        for (const auto& colour : seen)
-            if (colour == attributes.color) return;
-        seen.push_back(attributes.color);
-    };
-    for (const SceneShape& shape : frame.shapes) add(*shape.attributes);
-    for (const ObjectInstanceUse& use : frame.instances)
-        for (const auto& attributes : use.shapeAttributes) add(*attributes);
-    std::vector<Spectrum> spectra;
-    for (const auto& colour : seen) spectra.push_back(OnGrid(grid, colour));
-    return spectra;
-}
-
 void RunAnalyze(const std::string& scene, double targetDe) {
     const Frame frame = FirstFrame(scene);
-    const std::vector<double>& nm = frame.options.wavelengths;
-    if (nm.size() < 2)
+    if (frame.options.wavelengths.size() < 2 || !frame.options.colorFromSamples.empty())
         throw spectral::SpectralError(scene +
                                       ": analyze needs Option \"spectral\" \"basis\" \"sampled\"");
-    const spectral::WavelengthGrid grid =
-        spectral::WavelengthGrid::Make(nm.front(), nm.back(), nm[1] - nm[0]);
-    const std::vector<Spectrum> surfaces = SurfaceSpectra(frame, grid);
-    if (surfaces.empty() || frame.lights.empty())
+    const SceneSpectra spectra = CollectSceneSpectra(frame);
+    if (spectra.surfaces.empty() || spectra.lights.empty())
         throw spectral::SpectralError(scene + ": analyze needs at least one light and one shape");
     const spectral::Observer observer = spectral::NamedObserver("CIE1931");
     const Spectrum d65 = spectral::NamedSpectrum("D65");
-    std::vector<std::string> labels;
     std::vector<spectral::PatchScene> scenes;
-    for (const SceneLight& light : frame.lights) {
-        labels.push_back(light.light.shader.name + " " + light.light.handle.text);
-        scenes.push_back(spectral::MakePatchScene(LightSpectrum(frame, light, grid), surfaces,
-                                                  observer, d65, grid));
-    }
+    for (const Spectrum& light : spectra.lights)
+        scenes.push_back(
+            spectral::MakePatchScene(light, spectra.surfaces, observer, d65, spectra.grid));
+    const std::vector<double> nm = spectra.grid.Wavelengths();
     std::printf(
         "%s: %zu light(s), %zu surface colour(s); reference: the scene's %zu samples, "
         "%g-%g nm.\nΔE2000 in CIELAB relative to each light's white; two-bounce: all "
         "%zu ordered pairs.\n",
-        scene.c_str(), scenes.size(), surfaces.size(), nm.size(), nm.front(), nm.back(),
-        surfaces.size() * surfaces.size());
-    PrintRepresentationErrors(labels, scenes, targetDe);
+        scene.c_str(), scenes.size(), spectra.surfaces.size(), nm.size(), nm.front(), nm.back(),
+        spectra.surfaces.size() * spectra.surfaces.size());
+    PrintRepresentationErrors(spectra.lightLabels, scenes, targetDe);
 }
 
 }  // namespace

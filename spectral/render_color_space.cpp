@@ -1,8 +1,7 @@
 #include "spectral/render_color_space.h"
 
-#include <Eigen/Dense>
-
 #include "spectral/colorimetry.h"
+#include "spectral/spectral_error.h"
 
 namespace gonio::spectral {
 namespace {
@@ -52,22 +51,54 @@ Eigen::MatrixXd UpliftSpectra(const Eigen::MatrixXd& toRgb) {
     return spectra;
 }
 
+// The space's matrices in ColorSamples' float layouts: toRgb 3 × k as k rows of 3, fromRgb as
+// 3 rows of k, fromSamples (when given) as k rows of n.
+RenderColorSpace MakeSpace(const WavelengthGrid& grid, const Eigen::MatrixXd& toRgb,
+                           const Eigen::MatrixXd& fromRgb, const Eigen::MatrixXd& fromSamples) {
+    RenderColorSpace space;
+    space.grid = grid;
+    const Eigen::Index k = toRgb.cols();
+    for (Eigen::Index i = 0; i < k; ++i)
+        for (int c = 0; c < 3; ++c) space.toRgb.push_back(float(toRgb(c, i)));
+    for (int c = 0; c < 3; ++c)
+        for (Eigen::Index i = 0; i < k; ++i) space.fromRgb.push_back(float(fromRgb(c, i)));
+    for (Eigen::Index b = 0; b < fromSamples.rows(); ++b)
+        for (Eigen::Index i = 0; i < fromSamples.cols(); ++i)
+            space.fromSamples.push_back(float(fromSamples(b, i)));
+    return space;
+}
+
+void CheckBandEdges(const std::vector<int>& edges, int n) {
+    bool valid = edges.size() >= 2 && edges.front() == 0 && edges.back() == n;
+    for (size_t b = 1; valid && b < edges.size(); ++b) valid = edges[b] > edges[b - 1];
+    if (!valid)
+        throw SpectralError("band edges must rise from sample 0 to sample " + std::to_string(n));
+}
+
 }  // namespace
 
 RenderColorSpace SampledColorSpace(const WavelengthGrid& grid) {
-    RenderColorSpace space;
-    space.grid = grid;
     const Eigen::MatrixXd toRgb = RgbOfSamples(grid);
-    const Eigen::MatrixXd uplift = UpliftSpectra(toRgb);
-    const int n = grid.Count();
-    space.toRgb.resize(3 * size_t(n));
-    space.fromRgb.resize(3 * size_t(n));
-    for (int i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) {
-            space.toRgb[3 * size_t(i) + c] = float(toRgb(c, i));
-            space.fromRgb[size_t(c) * n + i] = float(uplift(c, i));
-        }
-    return space;
+    return MakeSpace(grid, toRgb, UpliftSpectra(toRgb), Eigen::MatrixXd());
+}
+
+RenderColorSpace BandColorSpace(const WavelengthGrid& grid, const std::vector<int>& edges,
+                                const Eigen::VectorXd& light) {
+    const int n = grid.Count(), k = int(edges.size()) - 1;
+    CheckBandEdges(edges, n);
+    if (light.size() != n) throw SpectralError("the band weights must have one value per sample");
+    const Eigen::MatrixXd samplesToRgb = RgbOfSamples(grid);
+    Eigen::MatrixXd fromSamples = Eigen::MatrixXd::Zero(k, n);
+    Eigen::MatrixXd toRgb(3, k);
+    for (int b = 0; b < k; ++b) {
+        const int first = edges[b], count = edges[b + 1] - edges[b];
+        Eigen::VectorXd w = light.segment(first, count).cwiseMax(0.0);
+        if (!(w.sum() > 0)) w.setOnes();
+        fromSamples.block(b, first, 1, count) = w.transpose() / w.sum();
+        toRgb.col(b) = samplesToRgb.middleCols(first, count) * w * (w.sum() / w.squaredNorm());
+    }
+    const Eigen::MatrixXd fromRgb = UpliftSpectra(samplesToRgb) * fromSamples.transpose();
+    return MakeSpace(grid, toRgb, fromRgb, fromSamples);
 }
 
 }  // namespace gonio::spectral

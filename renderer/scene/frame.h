@@ -67,7 +67,8 @@ struct SceneLight {
 };
 
 struct Frame {
-    int number = 0;
+    int number = 0;   // FrameBegin's
+    int ordinal = 0;  // the count of WorldBegin before this frame's
     Options options;
     std::vector<SceneLight> lights;
     std::vector<SceneShape> shapes;

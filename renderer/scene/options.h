@@ -50,9 +50,16 @@ struct Options {
     std::vector<float> colorToRgb;
     // ColorSamples' RGBn: 3 rows of n, colour = Σ RGB[c]·row c. Empty: the colours are RGB.
     std::vector<float> colorFromRgb;
-    // Option "spectral" "basis" "sampled": the wavelength (nm) of each colour component.
-    // Empty: the components are RGB, or whatever ColorSamples made them.
+    // Option "spectral": the wavelengths (nm) spectra are sampled at; under "sampled" each is a
+    // colour component. Empty: the components are RGB, or whatever ColorSamples made them.
     std::vector<double> wavelengths;
+    // "bands": k rows of wavelengths.size(), the components of a sampled spectrum. Empty: the
+    // components are the samples.
+    std::vector<float> colorFromSamples;
+    // "bands": the number of bands asked for. Their edges are chosen for each frame from its own
+    // spectra (renderer/scene/band_plan.h); until then (colorFromSamples empty) the frame is
+    // built sampled.
+    int bands = 0;
     // Option "spectral" "basis" "rgb": colours given as spectra are reduced to their RGB first,
     // as an RGB renderer must (the RGB image of thesis fig. 6.5).
     bool spectraAsRgb = false;

@@ -146,8 +146,10 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
     state_->options.cameraMotionTimes = state_->transformTimes;
     state_->options.cameraMotion = state_->transformSamples;
     state_->inWorld = true;
+    ApplyBandPlan(state_->worldsBegun);
     state_->frame = Frame();
     state_->frame.number = state_->frameNumber;
+    state_->frame.ordinal = state_->worldsBegun++;
     state_->frame.options = state_->options;
     state_->frame.sceneFile = sceneFile_;
     // Spaces named before WorldBegin were relative to camera space; re-express them in world.

@@ -15,7 +15,12 @@
 #include "renderer/geometry/geometry_result.h"
 #include "renderer/rib/declarations.h"
 #include "renderer/rib/ri_target.h"
+#include "renderer/scene/band_plan.h"
 #include "renderer/scene/frame.h"
+
+namespace gonio::spectral {
+struct RenderColorSpace;
+}
 
 namespace gonio {
 
@@ -28,6 +33,9 @@ class SceneBuilder : public RiTarget {
 
     // Reports blocks left open at the end of the input.
     void Finish(const FileLoc& endOfInput);
+    // The bands of the frames that ask for Option "spectral" "basis" "bands", chosen by a first
+    // build of the scene (BuildScene, scene_file.h).
+    void SetBandPlan(BandPlan plan);
 
     void Declare(const std::string& name, const std::string& declaration,
                  const FileLoc& loc) override;
@@ -211,6 +219,11 @@ class SceneBuilder : public RiTarget {
     // Sets the colour components (and their RGB matrices) and resets Color and Opacity to 1.
     void SetColorComponents(int n, std::vector<float> toRgb, std::vector<float> fromRgb,
                             std::vector<double> wavelengths);
+    // The same for a spectral colour space; `bands` > 0 for "bands" (Options::bands).
+    void SetColorSpace(const spectral::RenderColorSpace& space, int bands);
+    // At WorldBegin of a frame that asks for bands: its bands from the plan, or sampled until
+    // they are chosen.
+    void ApplyBandPlan(int ordinal);
     void ConcatTransform(const M44f& m);
     void SetShader(ShaderInstance* shader, const std::string& name, const ParamList& params,
                    const FileLoc& loc);

@@ -38,6 +38,8 @@ struct SceneBuilder::State {
     std::vector<FileLoc> blockLocs;
     bool inWorld = false;
     int frameNumber = 0;
+    int worldsBegun = 0;
+    BandPlan bandPlan;
     Frame frame;
     std::map<std::string, M44f> namedSpaces;  // current base space from the named space
     std::map<std::string, int> lightHandles;

@@ -43,6 +43,17 @@ std::vector<float> RgbOfSpectrum(const spectral::Spectrum& spectrum) {
     return rgb;
 }
 
+// Under "bands", the light-weighted band means (Options::colorFromSamples); else the samples.
+std::vector<float> ComponentsOfSamples(const Options& options, std::vector<float> samples) {
+    if (options.colorFromSamples.empty()) return samples;
+    const size_t n = samples.size(), k = options.colorFromSamples.size() / n;
+    std::vector<float> components(k, 0.0f);
+    for (size_t b = 0; b < k; ++b)
+        for (size_t i = 0; i < n; ++i)
+            components[b] += options.colorFromSamples[b * n + i] * samples[i];
+    return components;
+}
+
 }  // namespace
 
 bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFile,
@@ -59,13 +70,14 @@ bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFil
     if (options.wavelengths.empty()) {
         *error = "a spectrum (\"" + nameOrFile +
                  "\") needs Option \"spectral\" \"basis\" "
-                 "\"sampled\" before WorldBegin";
+                 "\"sampled\" (or \"bands\") before WorldBegin";
         return false;
     }
     try {
         const spectral::Spectrum spectrum = spectral::LookupSpectrum(nameOrFile);
-        out->clear();
-        for (double nm : options.wavelengths) out->push_back(float(spectrum.Evaluate(nm)));
+        std::vector<float> samples;
+        for (double nm : options.wavelengths) samples.push_back(float(spectrum.Evaluate(nm)));
+        *out = ComponentsOfSamples(options, samples);
         return true;
     } catch (const spectral::SpectralError& e) {
         *error = e.what();

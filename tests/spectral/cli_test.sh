@@ -1,7 +1,7 @@
 #!/bin/sh
 # gonio spectral end to end: info of a named spectrum (D65's CIE 15 white point), the patch
 # table's rows, analyze on a scene's own spectra, and bad input (an unknown name, a malformed
-# file, a scene without Option "spectral") as a located error, exit 1.
+# file, a scene without Option "spectral") as a located error, exit 1; renders with bands.
 set -u
 gonio=$1
 ribs=$2
@@ -34,4 +34,17 @@ printf 'WorldBegin\nLightSource "distantlight" 1\nSphere 1 -1 1 360\nWorldEnd\n'
 "$gonio" spectral analyze "$work/rgb.rib" >"$work/out" 2>&1
 [ $? -eq 1 ] || fail "analyze of an RGB scene should exit 1"
 grep -q 'needs Option "spectral"' "$work/out" || fail "analyze should say why: $(cat "$work/out")"
+# Bands in a render: the scene is read twice, so a file renders and standard input is refused;
+# a band is no wavelength, so Display "spectral" is refused.
+sed 's/"string basis" "sampled"/"string basis" "bands" "int bands" [12]/; /"spectral"$/d' \
+    "$ribs/tcs_f11.rib" >"$work/bands.rib"
+(cd "$work" && "$gonio" render bands.rib -o bands.png) || fail "render with bands exited $?"
+[ -s "$work/bands.png" ] || fail "render with bands wrote no image"
+"$gonio" render - <"$work/bands.rib" >"$work/out" 2>&1
+[ $? -eq 1 ] || fail "bands from standard input should exit 1"
+grep -q 'standard input only once' "$work/out" || fail "stdin and bands: $(cat "$work/out")"
+sed 's/"string basis" "sampled"/"string basis" "bands"/' "$ribs/tcs_f11.rib" >"$work/bands_exr.rib"
+(cd "$work" && "$gonio" render bands_exr.rib) >"$work/out" 2>&1
+[ $? -ne 0 ] || fail "Display spectral under bands should fail"
+grep -q 'bands_exr.rib:7:1: error: .*"spectral" needs' "$work/out" || fail "$(cat "$work/out")"
 echo "spectral.cli: ok"

@@ -6,6 +6,7 @@
 
 #include "spectral/colorimetry.h"
 #include "spectral/named_spectra.h"
+#include "spectral/spectral_error.h"
 
 namespace gonio::spectral {
 namespace {
@@ -64,6 +65,77 @@ TEST(RenderColorSpace, ALightKeepsItsChromaticity) {
         EXPECT_NEAR(got.x(), want.x(), 3e-4) << name;
         EXPECT_NEAR(got.y(), want.y(), 3e-4) << name;
     }
+}
+
+// Bands: the components and the display of a sampled spectrum (k rows of n, then k rows of 3).
+std::vector<double> BandComponents(const RenderColorSpace& bands, const Eigen::VectorXd& s) {
+    const size_t n = size_t(s.size()), k = bands.fromSamples.size() / n;
+    std::vector<double> c(k, 0.0);
+    for (size_t b = 0; b < k; ++b)
+        for (size_t i = 0; i < n; ++i) c[b] += bands.fromSamples[b * n + i] * s[Eigen::Index(i)];
+    return c;
+}
+
+Rgb BandRgb(const RenderColorSpace& bands, const std::vector<double>& c) {
+    Rgb rgb = Rgb::Zero();
+    for (size_t b = 0; b < c.size(); ++b)
+        for (int ch = 0; ch < 3; ++ch) rgb[ch] += c[b] * bands.toRgb[3 * b + ch];
+    return rgb;
+}
+
+Eigen::VectorXd Sampled(const char* name) {
+    const std::vector<double> v = NamedSpectrum(name).Sample(ReferenceGrid());
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
+}
+
+const std::vector<int> kEdges = {0, 6, 14, 20, 27, 33, 40, 47, 55, 62, 70, 81};
+
+// F11's narrow lines make a light-weighted band the only way a box band can keep the light
+// itself exact: its display through 11 bands is its display through the 81 samples.
+TEST(BandColorSpace, TheLightItselfDisplaysExactly) {
+    const Eigen::VectorXd f11 = Sampled("F11");
+    const RenderColorSpace bands = BandColorSpace(ReferenceGrid(), kEdges, f11);
+    EXPECT_EQ(bands.toRgb.size(), 3u * 11);
+    EXPECT_EQ(bands.fromRgb.size(), 3u * 11);
+    const std::vector<double> samples(f11.data(), f11.data() + f11.size());
+    const Rgb want = ToRgb(samples), got = BandRgb(bands, BandComponents(bands, f11));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4 * want.maxCoeff()) << c;
+}
+
+// A reflectance constant within each band, lit by the light: the product of the components
+// displays as the product of the spectra (the one-bounce term is exact for such surfaces).
+TEST(BandColorSpace, ABandwiseConstantReflectanceUnderTheLightIsExact) {
+    const Eigen::VectorXd f11 = Sampled("F11");
+    const RenderColorSpace bands = BandColorSpace(ReferenceGrid(), kEdges, f11);
+    Eigen::VectorXd r(81);
+    for (size_t b = 0; b + 1 < kEdges.size(); ++b)
+        r.segment(kEdges[b], kEdges[b + 1] - kEdges[b]).setConstant(0.1 + 0.08 * double(b));
+    const std::vector<double> cl = BandComponents(bands, f11), cr = BandComponents(bands, r);
+    std::vector<double> product(cl.size());
+    for (size_t b = 0; b < cl.size(); ++b) product[b] = cl[b] * cr[b];
+    const Eigen::VectorXd exact = f11.cwiseProduct(r);
+    const Rgb want = ToRgb(std::vector<double>(exact.data(), exact.data() + 81));
+    const Rgb got = BandRgb(bands, product);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4 * want.maxCoeff()) << c;
+}
+
+// Under an equal-energy light the bands are plain means: constant spectra stay grey and RGB's
+// uplift keeps grey flat, so a neutral scene renders as in "sampled" and "rgb".
+TEST(BandColorSpace, UnderAConstantLightGreyStaysGrey) {
+    const RenderColorSpace bands =
+        BandColorSpace(ReferenceGrid(), kEdges, Eigen::VectorXd::Constant(81, 2.0));
+    const Rgb grey = BandRgb(bands, BandComponents(bands, Eigen::VectorXd::Constant(81, 0.7)));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(grey[c], 0.7, 1e-5);
+    for (size_t b = 0; b < 11; ++b)
+        EXPECT_NEAR(bands.fromRgb[b] + bands.fromRgb[11 + b] + bands.fromRgb[22 + b], 1.0, 1e-5);
+}
+
+TEST(BandColorSpace, RejectsEdgesThatDoNotPartitionTheSamples) {
+    const Eigen::VectorXd e = Eigen::VectorXd::Ones(81);
+    EXPECT_THROW(BandColorSpace(ReferenceGrid(), {0, 40, 40, 81}, e), SpectralError);
+    EXPECT_THROW(BandColorSpace(ReferenceGrid(), {0, 40, 80}, e), SpectralError);
+    EXPECT_THROW(BandColorSpace(ReferenceGrid(), {0, 81}, Eigen::VectorXd::Ones(80)),
+                 SpectralError);
 }
 
 }  // namespace

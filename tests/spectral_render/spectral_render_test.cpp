@@ -14,7 +14,7 @@
 
 #include "renderer/frame/frame_renderer.h"
 #include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_builder.h"
+#include "renderer/scene/scene_file.h"
 #include "spectral/colorimetry.h"
 #include "spectral/named_spectra.h"
 #include "tests/support/captured_diagnostics.h"
@@ -50,12 +50,14 @@ Rendered Render(const std::string& options, const std::string& surface, const st
     test::CapturedDiagnostics captured;
     {
         Diagnostics& diagnostics = captured.Get();
-        SceneBuilder builder("card.rib", diagnostics, [&](const Frame& frame) {
-            RenderStats stats;
-            RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
-        });
-        ParseRibString(rib, "card.rib", builder, diagnostics);
-        builder.Finish(FileLoc{std::make_shared<const std::string>("card.rib"), 0, 0});
+        BuildScene(
+            "card.rib",
+            [&](RiTarget& target, Diagnostics& d) { ParseRibString(rib, "card.rib", target, d); },
+            diagnostics,
+            [&](const Frame& frame) {
+                RenderStats stats;
+                RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
+            });
         result.errors = diagnostics.ErrorCount();
     }
     result.messages = captured.Text();
@@ -70,6 +72,7 @@ Rendered Render(const std::string& options, const std::string& surface, const st
 }
 
 const char* const kSampled = "Option \"spectral\" \"basis\" \"sampled\"";
+const char* const kBands = "Option \"spectral\" \"basis\" \"bands\" \"bands\" 16";
 const char* const kLightAlongView =
     "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0]";
 
@@ -79,8 +82,9 @@ Xyz SceneXyz(const Rgb& rgb, const spectral::SampledObserver& observer) {
     return spectral::BradfordAdapt(spectral::LinearSrgbToXyz(rgb), spectral::SrgbWhite(), white);
 }
 
-// A white card under a white light is the same picture in RGB and in 81 samples, whether the
-// light's colour is left at its default, given as RGB (uplifted) or as the spectrum E.
+// A white card under a white light is the same picture in RGB, in 81 samples and in 16 bands,
+// whether the light's colour is left at its default, given as RGB (uplifted) or as the spectrum
+// E.
 TEST(SpectralRender, NeutralSceneRendersAsInRgb) {
     const Rendered rgb = Render("", "", kLightAlongView);
     ASSERT_EQ(rgb.errors, 0) << rgb.messages;
@@ -90,9 +94,12 @@ TEST(SpectralRender, NeutralSceneRendersAsInRgb) {
                               "\"lightcolor\" [1 1 1]",
                               "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0] "
                               "\"lightcolor\" [\"E\"]"}) {
-        const Rendered sampled = Render(kSampled, "Color [1 1 1]", light);
-        ASSERT_EQ(sampled.errors, 0) << sampled.messages;
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(sampled.pixel[c], rgb.pixel[c], 2e-5) << light;
+        for (const char* basis : {kSampled, kBands}) {
+            const Rendered spectral = Render(basis, "Color [1 1 1]", light);
+            ASSERT_EQ(spectral.errors, 0) << spectral.messages;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(spectral.pixel[c], rgb.pixel[c], 2e-5) << basis << " " << light;
+        }
     }
 }
 

@@ -1,0 +1,40 @@
+#include "renderer/scene/scene_file.h"
+
+#include <memory>
+
+#include "spectral/spectral_error.h"
+
+namespace gonio {
+namespace {
+
+FileLoc EndOf(const std::string& sceneName) {
+    return FileLoc{std::make_shared<const std::string>(sceneName), 0, 0};
+}
+
+}  // namespace
+
+void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics& diagnostics,
+                const SceneBuilder::FrameHandler& onFrame) {
+    BandPlan plan;
+    SceneBuilder builder(sceneName, diagnostics, [&](const Frame& frame) {
+        if (frame.options.bands == 0) return onFrame(frame);
+        try {
+            plan[frame.ordinal] = ChooseBands(frame);
+        } catch (const spectral::SpectralError& e) {
+            diagnostics.Error(EndOf(sceneName), "frame " + std::to_string(frame.number) +
+                                                    " is not rendered: " + e.what());
+        }
+    });
+    read(builder, diagnostics);
+    builder.Finish(EndOf(sceneName));
+    if (plan.empty()) return;
+    Diagnostics silent(nullptr);
+    SceneBuilder banded(sceneName, silent, [&](const Frame& frame) {
+        if (plan.count(frame.ordinal)) onFrame(frame);
+    });
+    banded.SetBandPlan(plan);
+    read(banded, silent);
+    banded.Finish(EndOf(sceneName));
+}
+
+}  // namespace gonio
