@@ -23,4 +23,7 @@ void PrintRepresentationErrors(const std::vector<std::string>& lights,
 // `gonio spectral analyze SCENE.rib`: the same table for the scene's own lights and surfaces.
 void AddSpectralAnalyzeCommand(CLI::App& spectral, int* exitCode);
 
+// `gonio spectral diff REFERENCE IMAGE`: the ΔE2000 of two renders, and its map.
+void AddSpectralDiffCommand(CLI::App& spectral, int* exitCode);
+
 }  // namespace gonio

@@ -16,6 +16,7 @@
 #include "spectral/colorimetry.h"
 #include "spectral/named_spectra.h"
 #include "spectral/patch_analysis.h"
+#include "spectral/render_color_space.h"
 #include "spectral/spectral_error.h"
 #include "spectral_cli.h"
 
@@ -50,6 +51,12 @@ void RunInfo(const std::string& nameOrPath) {
         "  XYZ       %.4f %.4f %.4f  (CIE 1931 2°, summed over %g-%g nm at %g nm, Y = 100)\n",
         xyz.x(), xyz.y(), xyz.z(), grid.start, grid.end, grid.step);
     std::printf("  xy        %.5f %.5f\n", xy.x(), xy.y());
+    if (grid.start != ReferenceGrid().start || grid.end != ReferenceGrid().end) return;
+    // What a spectral render displays for it (E white adapted to D65), and so what an RGB scene
+    // would give for it: the RGB to match (gonio spectral match) to make a metamer.
+    const Rgb rgb = DisplayRgb(spectrum) / LinearSrgbToXyz(DisplayRgb(spectrum)).y();
+    std::printf("  RGB       %.5f %.5f %.5f  (linear sRGB as a spectral render shows it, Y = 1)\n",
+                rgb[0], rgb[1], rgb[2]);
 }
 
 std::vector<std::string> SplitCommas(const std::string& text) {
@@ -161,6 +168,7 @@ void AddSpectralCommand(CLI::App& app, int* exitCode) {
         RunSpectralGuarded(exitCode, [&] { RunPatches(*lights, *target); });
     });
     AddSpectralAnalyzeCommand(*command, exitCode);
+    AddSpectralDiffCommand(*command, exitCode);
 }
 
 }  // namespace gonio

@@ -82,6 +82,15 @@ RenderColorSpace SampledColorSpace(const WavelengthGrid& grid) {
     return MakeSpace(grid, toRgb, UpliftSpectra(toRgb), Eigen::MatrixXd());
 }
 
+Eigen::Vector3d DisplayRgb(const Spectrum& spectrum) {
+    static const RenderColorSpace space = SampledColorSpace(ReferenceGrid());
+    const std::vector<double> samples = spectrum.Sample(space.grid);
+    Eigen::Vector3d rgb = Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < samples.size(); ++i)
+        for (int c = 0; c < 3; ++c) rgb[c] += samples[i] * space.toRgb[3 * i + c];
+    return rgb;
+}
+
 RenderColorSpace BandColorSpace(const WavelengthGrid& grid, const std::vector<int>& edges,
                                 const Eigen::VectorXd& light) {
     const int n = grid.Count(), k = int(edges.size()) - 1;

@@ -40,6 +40,10 @@ RenderColorSpace SampledColorSpace(const WavelengthGrid& grid);
 // (Σ wᵢ Tᵢ) Σ wᵢ / Σ wᵢ² (Tᵢ: toRgb of sample i), so the light itself, and the light reflected
 // by any reflectance that is constant within each band, display exactly. Under a constant light
 // a constant spectrum is grey, as in "sampled". A band the light leaves dark uses plain means.
+// A spectrum's display RGB in the sampled colour space of the reference grid: what an RGB
+// renderer is given for it, a light's colour and a reflectance alike.
+Eigen::Vector3d DisplayRgb(const Spectrum& spectrum);
+
 RenderColorSpace BandColorSpace(const WavelengthGrid& grid, const std::vector<int>& edges,
                                 const Eigen::VectorXd& light);
 

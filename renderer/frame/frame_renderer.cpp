@@ -364,8 +364,12 @@ std::vector<DisplaySpec> Displays(const Frame& frame, const RenderSettings& sett
             diagnostics.NoteOnce("no display", FileLoc{},
                                  "no Display given: writing " + displays.back().name);
     }
-    if (!settings.outputOverride.empty())
+    if (!settings.outputOverride.empty()) {
+        // `-o out.exr` writes OpenEXR whatever type the scene's Display names: the format
+        // follows the extension (docs/user-guide.md).
         displays[0].name = OutputName(settings.outputOverride, frame.number);
+        displays[0].type = "file";
+    }
     return displays;
 }
 

@@ -31,18 +31,6 @@ bool SceneColorsFromNumbers(const Options& options, const std::vector<float>& va
 
 namespace {
 
-// The RGB of a spectrum as the sampled colour space displays it (render_color_space.h): what an
-// RGB renderer is given for it, a light's colour and a reflectance alike.
-std::vector<float> RgbOfSpectrum(const spectral::Spectrum& spectrum) {
-    static const spectral::RenderColorSpace space =
-        spectral::SampledColorSpace(spectral::ReferenceGrid());
-    const std::vector<double> samples = spectrum.Sample(space.grid);
-    std::vector<float> rgb(3, 0.0f);
-    for (size_t i = 0; i < samples.size(); ++i)
-        for (int c = 0; c < 3; ++c) rgb[c] += float(samples[i]) * space.toRgb[3 * i + c];
-    return rgb;
-}
-
 // Under "bands", the light-weighted band means (Options::colorFromSamples); else the samples.
 std::vector<float> ComponentsOfSamples(const Options& options, std::vector<float> samples) {
     if (options.colorFromSamples.empty()) return samples;
@@ -60,7 +48,8 @@ bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFil
                             std::vector<float>* out, std::string* error) {
     if (options.spectraAsRgb) {
         try {
-            *out = RgbOfSpectrum(spectral::LookupSpectrum(nameOrFile));
+            const Eigen::Vector3d rgb = spectral::DisplayRgb(spectral::LookupSpectrum(nameOrFile));
+            *out = {float(rgb[0]), float(rgb[1]), float(rgb[2])};
             return true;
         } catch (const spectral::SpectralError& e) {
             *error = e.what();

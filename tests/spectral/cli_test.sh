@@ -47,4 +47,22 @@ sed 's/"string basis" "sampled"/"string basis" "bands"/' "$ribs/tcs_f11.rib" >"$
 (cd "$work" && "$gonio" render bands_exr.rib) >"$work/out" 2>&1
 [ $? -ne 0 ] || fail "Display spectral under bands should fail"
 grep -q 'bands_exr.rib:7:1: error: .*"spectral" needs' "$work/out" || fail "$(cat "$work/out")"
+# diff: a render against itself is 0 everywhere; the rgb render of TCS under F11 is not; the map
+# is written; a size mismatch and an 8-bit file are errors.
+sed 's/"string basis" "sampled"/"string basis" "rgb"/; /"spectral"$/d' "$ribs/tcs_f11.rib" \
+    >"$work/rgb_tcs.rib"
+sed '/"spectral"$/d' "$ribs/tcs_f11.rib" >"$work/sampled_tcs.rib"
+(cd "$work" && "$gonio" render rgb_tcs.rib -o rgb.exr && "$gonio" render sampled_tcs.rib \
+    -o sampled.exr) 2>/dev/null || fail "renders for diff"
+out=$("$gonio" spectral diff "$work/sampled.exr" "$work/sampled.exr" --light F11) ||
+    fail "diff exited $?"
+echo "$out" | grep -q 'mean 0.000, 99th percentile 0.000, max 0.000' || fail "self-diff: $out"
+out=$("$gonio" spectral diff "$work/sampled.exr" "$work/rgb.exr" --light F11 -o "$work/map.png") ||
+    fail "diff exited $?"
+mean=$(echo "$out" | sed 's/.*mean \([0-9.]*\),.*/\1/')
+awk -v m="$mean" 'BEGIN { exit !(m > 1) }' || fail "rgb against sampled should differ: $out"
+[ -s "$work/map.png" ] || fail "no map written"
+"$gonio" spectral diff "$work/sampled.exr" "$work/bands.png" >"$work/out" 2>&1
+[ $? -eq 1 ] || fail "diff of an 8-bit file should exit 1"
+grep -q 'bands.png: ' "$work/out" || fail "diff should name the file: $(cat "$work/out")"
 echo "spectral.cli: ok"
