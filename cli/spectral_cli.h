@@ -26,4 +26,7 @@ void AddSpectralAnalyzeCommand(CLI::App& spectral, int* exitCode);
 // `gonio spectral diff REFERENCE IMAGE`: the ΔE2000 of two renders, and its map.
 void AddSpectralDiffCommand(CLI::App& spectral, int* exitCode);
 
+// `gonio spectral match LIGHT --rgb R G B`: the viewer's Match RGB (thesis §6.2.2).
+void AddSpectralMatchCommand(CLI::App& spectral, int* exitCode);
+
 }  // namespace gonio

@@ -169,6 +169,7 @@ void AddSpectralCommand(CLI::App& app, int* exitCode) {
     });
     AddSpectralAnalyzeCommand(*command, exitCode);
     AddSpectralDiffCommand(*command, exitCode);
+    AddSpectralMatchCommand(*command, exitCode);
 }
 
 }  // namespace gonio
