@@ -4,7 +4,8 @@
 // of CIE 1931 XYZ (the thesis's M X, D65 white), staying non-negative; by default the target
 // takes the light's brightness (the thesis's normalisation). Prints the Newton steps, the KKT
 // residuals, the relative change and the matched light's xy; writes it as a cspec file with -o.
-// An RGB no non-negative light has is an error (exit 1) naming the certificate.
+// An RGB no non-negative light has is an error (exit 1) naming the certificate. `--like F11` in
+// place of --rgb matches the RGB of another spectrum: with --brightness as-given, a metamer.
 
 #include <cstdio>
 #include <memory>
@@ -28,6 +29,7 @@ struct MatchRequest {
     std::string light;
     std::vector<double> rgb;
     std::vector<double> grid{380, 780, 5};
+    std::string like;  // instead of rgb: the RGB of this spectrum (a metamer of it)
     std::string brightness = "euclidean";
     std::string out;
 };
@@ -46,11 +48,17 @@ Eigen::Vector2d Xy(const Eigen::VectorXd& spectrum, const SampledObserver& obser
     return Chromaticity(Tristimulus(spectrum, observer));
 }
 
-void RunMatch(const MatchRequest& request) {
+void RunMatch(MatchRequest request) {
     const WavelengthGrid grid =
         WavelengthGrid::Make(request.grid[0], request.grid[1], request.grid[2]);
     const Eigen::VectorXd light = SampleSpectrum(LookupSpectrum(request.light), grid);
     const Eigen::Matrix3Xd m = CieRgbMatrix(grid);
+    if (request.rgb.empty() && request.like.empty())
+        throw SpectralError("match needs the wanted colour: --rgb R G B or --like SPECTRUM");
+    if (!request.like.empty()) {
+        const Eigen::Vector3d rgb = m * SampleSpectrum(LookupSpectrum(request.like), grid);
+        request.rgb = {rgb.x(), rgb.y(), rgb.z()};
+    }
     const Eigen::Vector3d target = MatchTarget(request, light, m);
     const LightMatch match = MatchLightToRgb(light, m, target);
     if (!match.reachable) throw SpectralError(match.message);
@@ -86,9 +94,12 @@ void AddSpectralMatchCommand(CLI::App& spectral, int* exitCode) {
     auto request = std::make_shared<MatchRequest>();
     match->add_option("light", request->light, "a named spectrum (D65, F11, ...) or a file")
         ->required();
-    match->add_option("--rgb", request->rgb, "the wanted linear sRGB (CIE 1931, D65 white)")
-        ->required()
-        ->expected(3);
+    CLI::Option* rgb =
+        match->add_option("--rgb", request->rgb, "the wanted linear sRGB (CIE 1931, D65 white)")
+            ->expected(3);
+    CLI::Option* like = match->add_option(
+        "--like", request->like, "instead of --rgb: the RGB of this spectrum (make a metamer)");
+    rgb->excludes(like);
     match->add_option("--grid", request->grid, "START END STEP in nm")
         ->expected(3)
         ->capture_default_str();

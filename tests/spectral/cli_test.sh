@@ -78,4 +78,10 @@ xy=$(echo "$out" | sed -n 's/^  xy               \([0-9.]* [0-9.]*\) .*/\1/p')
 "$gonio" spectral match D65 --rgb -1 0.5 0.5 >"$work/out" 2>&1
 [ $? -eq 1 ] || fail "an unreachable RGB should exit 1"
 grep -q 'no non-negative light has this RGB' "$work/out" || fail "match should say why: $(cat "$work/out")"
+# --like: a metamer of F11 made from D65 has F11's chromaticity.
+"$gonio" spectral match D65 --like F11 --brightness as-given -o "$work/metamer.spd" >/dev/null ||
+    fail "match --like exited $?"
+f11=$("$gonio" spectral info F11 | grep '^  xy ')
+[ "$("$gonio" spectral info "$work/metamer.spd" | grep '^  xy ')" = "$f11" ] ||
+    fail "the metamer's xy should be F11's $f11"
 echo "spectral.cli: ok"
