@@ -7,4 +7,10 @@ namespace gonio {
 // Option "spectral"): room for 1 nm samples over 380-780 nm (401).
 constexpr int kMaxColorComponents = 512;
 
+// PixelSamples in each direction (1,048,576 samples a pixel, far past any use: a larger request
+// is a typing mistake that would run for days).
+constexpr float kMaxPixelSamples = 1024;
+// PixelFilter widths, in pixels: the film renders a margin of half the width around the image.
+constexpr float kMaxFilterWidth = 256;
+
 }  // namespace gonio

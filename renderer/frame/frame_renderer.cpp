@@ -13,6 +13,7 @@
 
 #include "base/progress.h"
 #include "base/random.h"
+#include "base/system_memory.h"
 #include "renderer/image/film.h"
 #include "renderer/image/image_writer.h"
 #include "renderer/raytrace/camera.h"
@@ -403,6 +404,20 @@ std::vector<ShaderOutput> OutputsOfDisplays(const std::vector<DisplaySpec>& disp
     return outputs;
 }
 
+// A located error, instead of std::bad_alloc, for an image this machine cannot hold.
+bool FilmFitsInMemory(const FilmSpec& spec, const PixelFilter& filter, const Options& options,
+                      Diagnostics& diagnostics) {
+    const double needed = Film::BytesNeeded(spec, filter), memory = PhysicalMemoryBytes();
+    if (memory == 0 || needed <= memory) return true;
+    diagnostics.Error(options.formatLoc,
+                      "Format " + std::to_string(options.xres) + " " +
+                          std::to_string(options.yres) + ": the image needs " + ByteSize(needed) +
+                          " (" + std::to_string(spec.channels) +
+                          " channels a pixel, with the filter's margin), more than the " +
+                          ByteSize(memory) + " of this machine's memory");
+    return false;
+}
+
 }  // namespace
 
 bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
@@ -422,7 +437,9 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const FilmSpec spec = FilmSpec::FromCropWindow(
         options.xres, options.yres, options.cropWindow[0], options.cropWindow[1],
         options.cropWindow[2], options.cropWindow[3], xsamples, ysamples, int(channelNames.size()));
-    Film film(spec, MakeFilter(options, diagnostics), kTileSize);
+    const PixelFilter filter = MakeFilter(options, diagnostics);
+    if (!FilmFitsInMemory(spec, filter, options, diagnostics)) return true;
+    Film film(spec, filter, kTileSize);
     const Imath::Box2i range = film.PixelRange();
     const int width = range.max.x - range.min.x + 1, height = range.max.y - range.min.y + 1;
 

@@ -18,7 +18,9 @@ struct RenderStats {
     int width = 0, height = 0;
 };
 
-// Returns false if an output could not be written (already reported).
+// Returns false if an output could not be written (already reported). A frame too large for
+// this machine's memory is an error in the scene (reported at its Format): nothing is rendered
+// and it returns true.
 bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
                  RenderStats* stats);
 

@@ -57,6 +57,16 @@ Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
       tilesY_((range_.max.y - range_.min.y + tileSize_) / tileSize_),
       tiles_(size_t(tilesX_) * tilesY_) {}
 
+double Film::BytesNeeded(const FilmSpec& spec, const PixelFilter& filter) {
+    const double width = spec.WindowWidth() + 2.0 * FilterMargin(filter.XRadius());
+    const double height = spec.WindowHeight() + 2.0 * FilterMargin(filter.YRadius());
+    // A tile's sums (double per channel, two weights), nearest samples and depth (float), and
+    // the resolved image (float per channel).
+    const double perPixel =
+        8.0 * spec.channels + 16 + 4.0 * spec.channels + 4 + 4.0 * spec.channels;
+    return width * height * perPixel;
+}
+
 Imath::Box2i Film::PixelRange() const { return range_; }
 
 Imath::Box2i Film::TilePixels(int tile) const {

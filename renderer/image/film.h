@@ -75,6 +75,10 @@ class Film {
     // The filter fixes the margin of extra pixels around the window whose samples are needed.
     Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize = 16);
 
+    // What such a film holds at its fullest (every tile stored, and the resolved image), so a
+    // render can refuse one that cannot fit before allocating it.
+    static double BytesNeeded(const FilmSpec& spec, const PixelFilter& filter);
+
     const FilmSpec& Spec() const { return spec_; }
     const PixelFilter& Filter() const { return filter_; }
 

@@ -24,6 +24,7 @@ void SceneBuilder::Format(int xres, int yres, float pixelAspect, const FileLoc& 
     }
     state_->options.xres = xres;
     state_->options.yres = yres;
+    state_->options.formatLoc = loc;
     state_->options.pixelAspect = pixelAspect > 0 ? pixelAspect : 1;
 }
 
@@ -123,6 +124,11 @@ void SceneBuilder::PixelSamples(float xsamples, float ysamples, const FileLoc& l
         diagnostics_.Error(loc, "PixelSamples must be at least 1 1");
         return;
     }
+    if (xsamples > kMaxPixelSamples || ysamples > kMaxPixelSamples) {
+        diagnostics_.Error(loc, "PixelSamples must be at most " +
+                                    std::to_string(int(kMaxPixelSamples)) + " in each direction");
+        return;
+    }
     state_->options.xsamples = xsamples;
     state_->options.ysamples = ysamples;
 }
@@ -132,6 +138,11 @@ void SceneBuilder::PixelFilter(const std::string& name, float xwidth, float ywid
     if (!RequireOptions("PixelFilter", loc)) return;
     if (!(xwidth > 0) || !(ywidth > 0)) {
         diagnostics_.Error(loc, "PixelFilter widths must be positive");
+        return;
+    }
+    if (xwidth > kMaxFilterWidth || ywidth > kMaxFilterWidth) {
+        diagnostics_.Error(loc, "PixelFilter widths must be at most " +
+                                    std::to_string(int(kMaxFilterWidth)) + " pixels");
         return;
     }
     state_->options.filterName = name;

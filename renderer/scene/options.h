@@ -29,6 +29,7 @@ struct QuantizeSetting {
 struct Options {
     // Camera and image.
     int xres = 640, yres = 480;  // RISpec leaves the default to the device; Aqsis uses 640x480
+    FileLoc formatLoc;           // the Format request, for a resolution too large to render
     float pixelAspect = 1;
     float frameAspect = 0;  // 0: derived from the format
     bool screenWindowSet = false;

@@ -329,7 +329,8 @@ void CodeGenerator::Loop(Node* s) {
 void CodeGenerator::Exit(Node* s) {
     if (s->kind == NodeKind::Return) {
         if (functions_.empty()) return;
-        const FunctionFrame& f = functions_.back();
+        // A copy: the return value may call a function, whose inlining pushes onto functions_.
+        const FunctionFrame f = functions_.back();
         if (s->kids[0] && f.result >= 0) {
             int v = ExprAs(s->kids[0], f.type);
             Emit(Op::Assign, {f.result, v});

@@ -137,6 +137,20 @@ TEST(Film, SingleSampleSpreadsAsTheFilterSays) {
     EXPECT_GT(image.At(4, 3)[0], image.At(3, 3)[0]);
 }
 
+// The film's size grows with the window and the filter's margin, so that a render can refuse
+// a film it cannot hold before allocating it.
+TEST(Film, BytesNeededCountsTheMarginAndTheChannels) {
+    const PixelFilter box = MakeFilter("box", 1, 1), wide = MakeFilter("box", 9, 9);
+    const double small = Film::BytesNeeded(SmallSpec(10, 10, 1, 1, 4), box);
+    EXPECT_DOUBLE_EQ(Film::BytesNeeded(SmallSpec(20, 10, 1, 1, 4), box), 2 * small);
+    EXPECT_GT(Film::BytesNeeded(SmallSpec(10, 10, 1, 1, 8), box), 1.5 * small);
+    const Film film(SmallSpec(10, 10, 1, 1, 4), wide);
+    const Imath::Box2i range = film.PixelRange();
+    const double pixels = double(range.max.x - range.min.x + 1) * (range.max.y - range.min.y + 1);
+    EXPECT_DOUBLE_EQ(Film::BytesNeeded(SmallSpec(10, 10, 1, 1, 4), wide), small * pixels / 100);
+    EXPECT_GT(Film::BytesNeeded(SmallSpec(1000000, 1000000, 1, 1, 5), box), 1e13);
+}
+
 TEST(Film, CancelledWeightsFallBackToTheNearestSample) {
     PixelFilter filter = MakeFilter("catmull-rom", 4, 4);
     // Find the offset whose weight cancels the negative lobe at 1.5 pixels.

@@ -2,7 +2,8 @@
 """Checks of message passing, textureinfo, random() and AOV displays through `gonio render`
 (issue 3): values that one shader passes to another reach the image exactly; an AOV of a
 constant output parameter equals it; the N AOV of a sphere is its analytic normal; random()
-gives the same image for --threads 1 and 2 and a different one for another --seed.
+gives the same image for --threads 1 and 2 and a different one for another --seed; an image too
+large for the machine is a located error.
 
     message_checks.py --gonio build/bin/gonio"""
 
@@ -164,8 +165,18 @@ def check_random_is_deterministic(ws):
     expect(distinct > 0.9 * len(values), f"only {distinct} distinct pixels")
 
 
+def check_too_large_an_image_is_an_error(ws):
+    """A Format no machine can hold is refused at its line (exit 1), not aborted in the
+    allocator (exit 134), and nothing is written."""
+    proc = ws.render('Format 1000000 1000000 1\nDisplay "huge.tif" "file" "rgba"\n'
+                     'WorldBegin\nSphere 1 -1 1 360\nWorldEnd\n', name="huge", expect_code=1)
+    expect("huge.rib:1:1: error: Format 1000000 1000000: the image needs" in proc.stderr and
+           "of this machine's memory" in proc.stderr, f"message: {proc.stderr}")
+    expect(not os.path.exists(ws.path("huge.tif")), "an image was written")
+
+
 CHECKS = [check_messages_and_aovs, check_lightsource, check_textureinfo,
-          check_random_is_deterministic]
+          check_random_is_deterministic, check_too_large_an_image_is_an_error]
 
 
 def main():

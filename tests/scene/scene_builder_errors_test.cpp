@@ -272,6 +272,17 @@ TEST(SceneBuilderValues, BadCameraOptions) {
     EXPECT_EQ(r.errors, 9);
 }
 
+// Sizes that would run for days or exhaust memory are refused where they are asked for.
+TEST(SceneBuilderValues, SamplesAndFiltersPastTheLimits) {
+    const BuildResult r = Build(
+        "PixelSamples 100000 100000\nPixelFilter \"gaussian\" 100000 2\nPixelSamples 1024 1024\n"
+        "PixelFilter \"box\" 256 256\n");
+    EXPECT_EQ(r.messages,
+              "test.rib:1:1: error: PixelSamples must be at most 1024 in each direction\n"
+              "test.rib:2:1: error: PixelFilter widths must be at most 256 pixels\n");
+    EXPECT_EQ(r.errors, 2);
+}
+
 // ---- what survives ----------------------------------------------------------------------------
 
 TEST(SceneBuilderFrames, OptionsSetInAFrameDoNotLeakIntoTheNext) {

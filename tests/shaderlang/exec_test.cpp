@@ -111,6 +111,23 @@ TEST(ShadeExec, UserFunctionWithOutputArgumentAndEarlyReturn) {
     EXPECT_FLOAT_EQ(r.At(1, 3), 2.625f);
 }
 
+// A return whose value calls user functions, nested: inlining them while the return is being
+// compiled must not lose the returning function's frame (it once read freed memory).
+TEST(ShadeExec, ReturnValueCallsOtherFunctions) {
+    auto r = Shade(R"(
+        float g(float x) { return x + 1; }
+        float f(float x) { return g(x) * 2; }
+        float h(float x) { return f(g(x)) + f(x) + g(g(g(x))); }
+        surface t() { Ci = color(f(u), h(u), 0); })",
+                   4, 1, "Ci");
+    ASSERT_EQ(r.width, 3) << r.diagnostics;
+    for (int i = 0; i < 4; ++i) {
+        const float u = (float(i) + 0.5f) / 4;
+        EXPECT_FLOAT_EQ(r.At(0, i), (u + 1) * 2) << i;
+        EXPECT_FLOAT_EQ(r.At(1, i), (u + 2) * 2 + (u + 1) * 2 + (u + 3)) << i;
+    }
+}
+
 TEST(ShadeExec, ExternReachesTheEnclosingShader) {
     auto r = Shade(R"(surface t() {
         float k = 2;
