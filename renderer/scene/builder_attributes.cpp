@@ -333,7 +333,9 @@ void SceneBuilder::Scale(float sx, float sy, float sz, const FileLoc&) {
     ConcatTransform(m);
 }
 
-// RISpec §4.3 RiSkew: shears so that a vector along d1 turns by `angle` towards d2.
+// RISpec §4.3 RiSkew: shifts points along d2 so that the vector d1 turns by `angle` towards d2
+// (all three in one plane). With p̂ the unit part of d1 perpendicular to d2 and θ the angle from
+// d2 to d1, the shear p' = p + k (p·p̂) d̂2 takes cot θ to cot θ + k, so k = cot(θ − angle) − cot θ.
 void SceneBuilder::Skew(float angle, float dx1, float dy1, float dz1, float dx2, float dy2,
                         float dz2, const FileLoc& loc) {
     Imath::V3f d1(dx1, dy1, dz1), d2(dx2, dy2, dz2);
@@ -343,24 +345,19 @@ void SceneBuilder::Skew(float angle, float dx1, float dy1, float dz1, float dx2,
     }
     d1.normalize();
     d2.normalize();
-    const float cosA = d1.dot(d2);
-    const Imath::V3f perp = (d2 - cosA * d1);
-    const float perpLen = perp.length();
-    const float alpha = std::acos(std::fmax(-1.f, std::fmin(1.f, cosA)));
-    const float target = alpha - angle * kDegrees;
-    if (perpLen == 0 || target <= 0 || target >= kPiF) {
+    const float cosTheta = d1.dot(d2);
+    const Imath::V3f perp = d1 - cosTheta * d2;
+    const float theta = std::acos(std::fmax(-1.f, std::fmin(1.f, cosTheta)));
+    const float target = theta - angle * kDegrees;
+    if (perp.length() == 0 || target <= 0 || target >= kPiF) {
         diagnostics_.Error(loc, "Skew: the angle is out of range for these directions");
         return;
     }
-    const Imath::V3f p = perp / perpLen;
-    // Points move along d1 in proportion to their coordinate along p̂, the part of d2
-    // perpendicular to d1, which turns d2 from angle alpha to alpha - angle off d1.
-    const float k = std::sin(alpha) > 0
-                        ? (std::cos(alpha) / std::sin(alpha) - std::cos(target) / std::sin(target))
-                        : 0;
-    M44f m;  // p' = p + k·(p·p̂)·d1 : rows are the images of the basis vectors
+    const Imath::V3f p = perp / perp.length();
+    const float k = std::cos(target) / std::sin(target) - std::cos(theta) / std::sin(theta);
+    M44f m;  // rows are the images of the basis vectors
     for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) m[r][c] += k * p[r] * d1[c];
+        for (int c = 0; c < 3; ++c) m[r][c] += k * p[r] * d2[c];
     ConcatTransform(m);
 }
 

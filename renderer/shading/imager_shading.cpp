@@ -12,6 +12,7 @@
 
 #include "renderer/shading/frame_shaders.h"
 #include "renderer/shading/named_textures.h"
+#include "renderer/shading/option_query.h"
 #include "shaderlang/shading_context.h"
 #include "shaderlang/shading_system.h"
 
@@ -50,6 +51,11 @@ class ImagerContext : public sl::ShadingContext {
         std::fill_n(steps_.begin(), n_, 1.f);
         std::fill_n(steps_.begin() + 3 * n_, n_, 1.f);
         SeedRandom(seeds);
+    }
+
+    bool Option(const std::string& name, const sl::TypeSpec& type, std::vector<float>* floats,
+                std::string*) const override {
+        return QueryOption(frame_.options, name, type, floats);
     }
 
     // P is in raster space, so "current" space is raster space here; NDC spans the full frame.

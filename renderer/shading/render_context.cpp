@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "renderer/shading/option_query.h"
 #include "renderer/shading/shading_files.h"
 
 namespace gonio {
@@ -303,24 +304,7 @@ bool RenderContext::Attribute(const std::string& name, const sl::TypeSpec& type,
 
 bool RenderContext::Option(const std::string& name, const sl::TypeSpec& type,
                            std::vector<float>* floats, std::string*) const {
-    if (type.base != sl::BaseType::Float) return false;
-    const Options& o = shaders_.GetFrame().options;
-    if (name == "Format") {
-        floats->assign({float(o.xres), float(o.yres), o.pixelAspect});
-    } else if (name == "FrameAspectRatio") {
-        floats->assign({o.frameAspect > 0 ? o.frameAspect : o.xres * o.pixelAspect / o.yres});
-    } else if (name == "CropWindow") {
-        floats->assign(o.cropWindow, o.cropWindow + 4);
-    } else if (name == "Clipping") {
-        floats->assign({o.nearClip, o.farClip});
-    } else if (name == "DepthOfField") {
-        floats->assign({o.fstop, o.focalLength, o.focalDistance});
-    } else if (name == "Shutter") {
-        floats->assign({o.shutterOpen, o.shutterClose});
-    } else {
-        return false;
-    }
-    return true;
+    return QueryOption(shaders_.GetFrame().options, name, type, floats);
 }
 
 bool RenderContext::RendererInfo(const std::string& name, const sl::TypeSpec& type,

@@ -3,7 +3,7 @@
 composites a colour under the filtered pixels exactly, c + (1 - a)·background with alpha 1,
 before Exposure; an Imager that names a missing shader or a surface shader is reported at its
 RIB line and the frame is still written, without an imager; an imager's texture() reads the
-map at raster coordinates.
+map at raster coordinates, and its option() the frame's options.
 
     imager_checks.py --gonio build/bin/gonio"""
 
@@ -137,8 +137,29 @@ def check_imagers_read_textures(ws):
            f"a missing map should warn once, at the imager's texture() line:\n{proc.stderr}")
 
 
+RESOLUTION = """imager resolution() {
+    uniform float format[3] = {0, 0, 0};
+    float found = option("Format", format);
+    Ci = color(format[0] / 100, format[1] / 100, found);
+    Oi = 1;
+}
+"""
+
+
+def check_imagers_read_options(ws):
+    """option("Format", f) in an imager gives the resolution (an imager that divides by it
+    must see it), everywhere in the frame."""
+    with open(ws.path("resolution.sl"), "w") as f:
+        f.write(RESOLUTION)
+    ws.render(frame(1, "resolution.tif", 'Imager "resolution"\n'))
+    image, = read_images(ws.path("resolution.tif"))
+    want = (SIZE / 100, SIZE / 100, 1)
+    wrong = [(p, v) for p, v in image.pixels.items() if not close(v[:3], want)]
+    expect(not wrong, f"{len(wrong)} pixels are not {want}, e.g. {wrong[:1]}")
+
+
 CHECKS = [check_background_is_exact, check_unusable_imagers_are_reported,
-          check_imagers_read_textures]
+          check_imagers_read_textures, check_imagers_read_options]
 
 
 def main():

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "base/math.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
 #include "renderer/scene/unused_parameters.h"
@@ -348,6 +349,31 @@ TEST(SceneBuilderFrames, MotionBlocksKeepTheTransformAtEachTime) {
     EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[0][3][0], 1);
     EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[1][3][0], 2);
     EXPECT_FLOAT_EQ(shape.worldFromObjectMotion[1][0][0], 2);
+}
+
+// RISpec's RiSkew shifts points along the second vector, turning the first towards it: Skew 45
+// from y towards x takes (0, 1, 0) to (1, 1, 0) and leaves x and z alone.
+TEST(SceneBuilderFrames, SkewTurnsTheFirstVectorTowardsTheSecond) {
+    const BuildResult r = Build(
+        "WorldBegin\nSkew 45 0 1 0 1 0 0\nSphere 1 -1 1 360\nSkew 30 1 0 0 0 0 1\n"
+        "Sphere 1 -1 1 360\nWorldEnd\n");
+    EXPECT_EQ(r.messages, "");
+    ASSERT_EQ(r.frames.size(), 1u);
+    ASSERT_EQ(r.frames[0].shapes.size(), 2u);
+    const M44f& skew = r.frames[0].shapes[0].worldFromObject;
+    V3f y, x, z;
+    skew.multVecMatrix(V3f(0, 1, 0), y);
+    skew.multVecMatrix(V3f(1, 0, 0), x);
+    skew.multVecMatrix(V3f(0, 0, 1), z);
+    EXPECT_NEAR((y - V3f(1, 1, 0)).length(), 0, 1e-6);
+    EXPECT_NEAR((x - V3f(1, 0, 0)).length(), 0, 1e-6);
+    EXPECT_NEAR((z - V3f(0, 0, 1)).length(), 0, 1e-6);
+    // x turned 30° towards z (x is 90° from z: it ends 60° from it, still in the xz plane).
+    const M44f& second = r.frames[0].shapes[1].worldFromObject;
+    V3f x2;
+    (second * skew.inverse()).multVecMatrix(V3f(1, 0, 0), x2);
+    EXPECT_NEAR(x2.normalized().dot(V3f(0, 0, 1)), std::cos(60 * kDegree), 1e-6);
+    EXPECT_NEAR(x2.y, 0, 1e-6);
 }
 
 TEST(SceneBuilderFrames, MovingQuadricsUseTheirFirstSample) {
