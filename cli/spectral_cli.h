@@ -23,4 +23,7 @@ void PrintRepresentationErrors(const std::vector<std::string>& lights,
 // `gonio spectral analyze SCENE.rib`: the same table for the scene's own lights and surfaces.
 void AddSpectralAnalyzeCommand(CLI::App& spectral, int* exitCode);
 
+// `gonio spectral match LIGHT --rgb R G B`: the viewer's Match RGB (thesis §6.2.2).
+void AddSpectralMatchCommand(CLI::App& spectral, int* exitCode);
+
 }  // namespace gonio

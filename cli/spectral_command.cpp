@@ -161,6 +161,7 @@ void AddSpectralCommand(CLI::App& app, int* exitCode) {
         RunSpectralGuarded(exitCode, [&] { RunPatches(*lights, *target); });
     });
     AddSpectralAnalyzeCommand(*command, exitCode);
+    AddSpectralMatchCommand(*command, exitCode);
 }
 
 }  // namespace gonio

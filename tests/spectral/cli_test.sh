@@ -1,7 +1,8 @@
 #!/bin/sh
 # gonio spectral end to end: info of a named spectrum (D65's CIE 15 white point), the patch
 # table's rows, analyze on a scene's own spectra, and bad input (an unknown name, a malformed
-# file, a scene without Option "spectral") as a located error, exit 1.
+# file, a scene without Option "spectral") as a located error, exit 1; match (residual, the written
+# cspec file's xy, an unreachable RGB as exit 1).
 set -u
 gonio=$1
 ribs=$2
@@ -34,4 +35,16 @@ printf 'WorldBegin\nLightSource "distantlight" 1\nSphere 1 -1 1 360\nWorldEnd\n'
 "$gonio" spectral analyze "$work/rgb.rib" >"$work/out" 2>&1
 [ $? -eq 1 ] || fail "analyze of an RGB scene should exit 1"
 grep -q 'needs Option "spectral"' "$work/out" || fail "analyze should say why: $(cat "$work/out")"
+out=$("$gonio" spectral match D65 --rgb 1 0.8 0.6 -o "$work/matched.spd") || fail "match exited $?"
+echo "$out" | grep -q '^  newton steps     [0-9]*$' || fail "match: no Newton steps: $out"
+residual=$(echo "$out" | sed -n 's/^  rgb residual     \([^ ]*\).*/\1/p')
+awk -v r="$residual" 'BEGIN { exit !(r + 0 <= 1e-9) }' || fail "match: RGB residual $residual"
+echo "$out" | grep -q '^  relative change  [0-9.]*%' || fail "match: no relative change: $out"
+grep -q '^cspec 380 780 5$' "$work/matched.spd" || fail "match -o: not a cspec file"
+xy=$(echo "$out" | sed -n 's/^  xy               \([0-9.]* [0-9.]*\) .*/\1/p')
+"$gonio" spectral info "$work/matched.spd" | grep -q "^  xy        $xy$" ||
+    fail "the written light's xy should be the printed $xy"
+"$gonio" spectral match D65 --rgb -1 0.5 0.5 >"$work/out" 2>&1
+[ $? -eq 1 ] || fail "an unreachable RGB should exit 1"
+grep -q 'no non-negative light has this RGB' "$work/out" || fail "match should say why: $(cat "$work/out")"
 echo "spectral.cli: ok"
