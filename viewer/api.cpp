@@ -80,6 +80,9 @@ void RegisterApi(httplib::Server& server, const ReflectanceImage& image) {
     server.Post("/api/light/save", Guarded([api](const httplib::Request& r) {
                     return api->SaveLight(ParseJsonObject(r.body));
                 }));
+    server.Post("/api/match", Guarded([api](const httplib::Request& r) {
+                    return api->Match(ParseJsonObject(r.body));
+                }));
     server.Get(R"(/.*)", [](const httplib::Request& request, httplib::Response& response) {
         if (!ServeWebFile(request, response))
             SendError(response, 404, "no such file or endpoint: " + request.path);

@@ -6,6 +6,8 @@
 #include <numeric>
 
 #include "spectral/colorimetry.h"
+#include "spectral/light_match.h"
+#include "spectral/spectral_error.h"
 #include "viewer/illuminants.h"
 #include "viewer/image_export.h"
 #include "viewer/json_fields.h"
@@ -19,6 +21,22 @@ Reply JsonReply(const nlohmann::json& value) { return {value.dump(), "applicatio
 
 Reply BinaryReply(const std::vector<float>& values) {
     return {LittleEndianFloats(values), "application/octet-stream", {}};
+}
+
+std::vector<double> Values(const Eigen::VectorXd& v) { return {v.begin(), v.end()}; }
+
+// "largest" (the page's patch: the largest components made equal), "euclidean" (the thesis's
+// text) or "none" (the target as given).
+Eigen::Vector3d MatchTarget(const nlohmann::json& request, const Eigen::VectorXd& light,
+                            const Eigen::Matrix3Xd& toRgb, const Eigen::Vector3d& target) {
+    const std::string brightness = OptionalString(request, "brightness", "largest");
+    if (brightness == "none") return target;
+    if (brightness != "largest" && brightness != "euclidean")
+        throw ViewerError("unknown brightness \"" + brightness +
+                          "\": expected largest, euclidean or none");
+    return spectral::NormalisedTarget(
+        light, toRgb, target,
+        brightness == "largest" ? spectral::Brightness::Largest : spectral::Brightness::Euclidean);
 }
 
 std::vector<std::vector<double>> Rows(const Eigen::Matrix3Xd& m) {
@@ -128,6 +146,32 @@ Reply ApiHandlers::LoadLight(const std::string& text, const std::string& name) c
 
 Reply ApiHandlers::SaveLight(const nlohmann::json& request) const {
     return {SaveLightFile(request), "text/plain; charset=utf-8", {}};
+}
+
+// Thesis §6.2.2's Match RGB: the light closest to the posted one (L2) whose RGB is the target
+// at the light's brightness, non-negative; an unreachable target is reported, not forced.
+Reply ApiHandlers::Match(const nlohmann::json& request) const {
+    const Eigen::VectorXd light = Light(request, "light");
+    const Eigen::Matrix3Xd& toRgb = Matrix(request);
+    const Eigen::Vector3d target =
+        MatchTarget(request, light, toRgb, NonNegativeVector(request, "target", 3));
+    spectral::LightMatch match;
+    try {
+        match = spectral::MatchLightToRgb(light, toRgb, target);
+    } catch (const spectral::SpectralError& e) {
+        throw ViewerError(e.what());
+    }
+    return JsonReply({{"reachable", match.reachable},
+                      {"spectrum", Values(match.spectrum)},
+                      {"rgb", Values(toRgb * match.spectrum)},
+                      {"target", Values(target)},
+                      {"lambda", Values(match.lambda)},
+                      {"newtonSteps", match.newtonSteps},
+                      {"rgbResidual", match.rgbResidual},
+                      {"complementarity", match.complementarity},
+                      {"certificate", Values(match.certificate)},
+                      {"relativeChange", match.relativeChange},
+                      {"message", match.message}});
 }
 
 }  // namespace gonio::viewer

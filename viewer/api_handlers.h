@@ -31,6 +31,7 @@ class ApiHandlers {
     Reply Difference(const nlohmann::json& request) const;
     Reply LoadLight(const std::string& text, const std::string& name) const;
     Reply SaveLight(const nlohmann::json& request) const;
+    Reply Match(const nlohmann::json& request) const;
 
   private:
     // The light `field` of a request: one non-negative number per wavelength.

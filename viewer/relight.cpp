@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "spectral/render_color_space.h"
+#include "spectral/light_match.h"
 #include "spectral/spectral_error.h"
 
 namespace gonio::viewer {
@@ -27,12 +27,8 @@ Eigen::Matrix3Xd CieMatrix(const std::vector<double>& wavelengths) {
         if (std::abs(wavelengths[i] - wavelengths[i - 1] - step) > 1e-6 * step)
             throw ViewerError("the CIE conversion needs evenly spaced wavelengths");
     try {
-        const spectral::RenderColorSpace space = spectral::SampledColorSpace(
+        return spectral::RenderRgbMatrix(
             spectral::WavelengthGrid::Make(wavelengths.front(), wavelengths.back(), step));
-        Eigen::Matrix3Xd m(3, n);
-        for (int i = 0; i < n; ++i)
-            for (int c = 0; c < 3; ++c) m(c, i) = space.toRgb[3 * i + c];
-        return m;
     } catch (const spectral::SpectralError& e) {
         throw ViewerError(std::string("the CIE conversion: ") + e.what());
     }
