@@ -12,12 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/frame/frame_renderer.h"
-#include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_builder.h"
 #include "spectral/colorimetry.h"
 #include "spectral/named_spectra.h"
-#include "tests/support/captured_diagnostics.h"
+#include "tests/support/render_rib.h"
 
 namespace gonio {
 namespace {
@@ -47,18 +44,9 @@ Rendered Render(const std::string& options, const std::string& surface, const st
         "\nSurface \"matte\" \"Kd\" 1\n"
         "Polygon \"P\" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]\nWorldEnd\n";
     Rendered result;
-    test::CapturedDiagnostics captured;
-    {
-        Diagnostics& diagnostics = captured.Get();
-        SceneBuilder builder("card.rib", diagnostics, [&](const Frame& frame) {
-            RenderStats stats;
-            RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
-        });
-        ParseRibString(rib, "card.rib", builder, diagnostics);
-        builder.Finish(FileLoc{std::make_shared<const std::string>("card.rib"), 0, 0});
-        result.errors = diagnostics.ErrorCount();
-    }
-    result.messages = captured.Text();
+    const test::RibRenderResult rendered = test::RenderRibString(rib, "card.rib");
+    result.errors = rendered.errors;
+    result.messages = rendered.messages;
     auto in = OIIO::ImageInput::open(image);
     if (!in) return result;
     std::vector<float> pixels(4 * 4 * 4);

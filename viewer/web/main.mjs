@@ -25,14 +25,19 @@ function download(blob, name) {
 
 function report(message) { $('status').textContent = message; }
 
-// Runs an action of a button, showing its failure in the status line.
+// Runs an action of a control, showing its failure in the status line. body[data-pending]
+// counts the actions still running, so that a script can wait for the page to settle.
+let pending = 0;
 function guarded(action) {
     return async (...args) => {
+        document.body.dataset.pending = String(++pending);
         try {
             report('');
             await action(...args);
         } catch (e) {
             report(e.message);
+        } finally {
+            document.body.dataset.pending = String(--pending);
         }
     };
 }
