@@ -14,6 +14,12 @@ namespace gonio::viewer {
 
 namespace {
 
+// IEC 61966-2-1's transfer function of one linear value, clamped to [0, 1].
+double EncodeSrgb(double linear) {
+    const double v = std::clamp(linear, 0.0, 1.0);
+    return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+}
+
 std::vector<uint8_t> SrgbBytes(const std::vector<float>& rgb) {
     std::vector<uint8_t> bytes(rgb.size());
     for (size_t i = 0; i < rgb.size(); ++i)
@@ -40,11 +46,6 @@ ExportFormat ParseExportFormat(const std::string& name) {
     if (name == "png") return ExportFormat::Png;
     if (name == "exr") return ExportFormat::Exr;
     throw ViewerError("unknown image format \"" + name + "\": expected \"png\" or \"exr\"");
-}
-
-double EncodeSrgb(double linear) {
-    const double v = std::clamp(linear, 0.0, 1.0);
-    return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
 }
 
 std::string EncodeImage(const std::vector<float>& rgb, int width, int height, ExportFormat format) {

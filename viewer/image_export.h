@@ -16,7 +16,4 @@ ExportFormat ParseExportFormat(const std::string& name);
 // if OpenImageIO cannot encode it.
 std::string EncodeImage(const std::vector<float>& rgb, int width, int height, ExportFormat format);
 
-// IEC 61966-2-1's transfer function of one linear value, clamped to [0, 1].
-double EncodeSrgb(double linear);
-
 }  // namespace gonio::viewer

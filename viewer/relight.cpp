@@ -42,10 +42,6 @@ RgbConversion ParseRgbConversion(const std::string& name) {
     throw ViewerError("unknown RGB conversion \"" + name + "\": expected \"box\" or \"cie\"");
 }
 
-std::string RgbConversionName(RgbConversion conversion) {
-    return conversion == RgbConversion::Box ? "box" : "cie";
-}
-
 Eigen::Matrix3Xd ConversionMatrix(RgbConversion conversion,
                                   const std::vector<double>& wavelengths) {
     if (conversion == RgbConversion::Box) return BoxMatrix(int(wavelengths.size()));

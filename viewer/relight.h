@@ -25,7 +25,6 @@ enum class RgbConversion {
 
 // "box" or "cie" (case-sensitive, as the API spells them); throws ViewerError otherwise.
 RgbConversion ParseRgbConversion(const std::string& name);
-std::string RgbConversionName(RgbConversion conversion);
 
 // The 3×n matrix M for samples at `wavelengths` (increasing, evenly spaced for Cie). Throws
 // ViewerError when the CIE tables do not cover them.

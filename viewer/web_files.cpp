@@ -9,8 +9,6 @@ std::string_view ContentType(std::string_view path) {
     if (endsWith(".html")) return "text/html; charset=utf-8";
     if (endsWith(".mjs") || endsWith(".js")) return "text/javascript; charset=utf-8";
     if (endsWith(".css")) return "text/css; charset=utf-8";
-    if (endsWith(".svg")) return "image/svg+xml";
-    if (endsWith(".png")) return "image/png";
     return "application/octet-stream";
 }
 

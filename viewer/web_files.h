@@ -14,7 +14,7 @@ struct WebFile {
 // nullptr for a path that is not one of the embedded files.
 const WebFile* FindWebFile(std::string_view path);
 
-// "text/html; charset=utf-8", "text/javascript; charset=utf-8", ... by the path's extension.
+// The MIME type of a page file by its extension (.html, .mjs, .css).
 std::string_view ContentType(std::string_view path);
 
 }  // namespace gonio::viewer
