@@ -13,5 +13,6 @@ void AddBrdfCommand(CLI::App& app, int* exitCode);
 void AddShaderCommand(CLI::App& app, int* exitCode);
 void AddShadeCommand(CLI::App& app, int* exitCode);
 void AddSpectralCommand(CLI::App& app, int* exitCode);
+void AddViewCommand(CLI::App& app, int* exitCode);
 
 }  // namespace gonio

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     gonio::AddShaderCommand(app, &exitCode);
     gonio::AddShadeCommand(app, &exitCode);
     gonio::AddSpectralCommand(app, &exitCode);
+    gonio::AddViewCommand(app, &exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

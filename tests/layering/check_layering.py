@@ -20,7 +20,7 @@ import sys
 FOLDERS = [
     "base", "renderer/rib", "renderer/geometry", "renderer/scene", "renderer/raytrace",
     "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "shaderlang",
-    "brdfsim", "spectral", "cli",
+    "brdfsim", "spectral", "viewer", "cli",
 ]
 # External libraries only some folders may see: the build keeps them private to those.
 GUARDED = ["embree3", "OpenImageIO", "Eigen", "httplib.h", "nlohmann"]

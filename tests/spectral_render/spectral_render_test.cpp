@@ -12,12 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/frame/frame_renderer.h"
-#include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_file.h"
 #include "spectral/colorimetry.h"
 #include "spectral/named_spectra.h"
-#include "tests/support/captured_diagnostics.h"
+#include "tests/support/render_rib.h"
 
 namespace gonio {
 namespace {
@@ -47,20 +44,9 @@ Rendered Render(const std::string& options, const std::string& surface, const st
         "\nSurface \"matte\" \"Kd\" 1\n"
         "Polygon \"P\" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]\nWorldEnd\n";
     Rendered result;
-    test::CapturedDiagnostics captured;
-    {
-        Diagnostics& diagnostics = captured.Get();
-        BuildScene(
-            "card.rib",
-            [&](RiTarget& target, Diagnostics& d) { ParseRibString(rib, "card.rib", target, d); },
-            diagnostics,
-            [&](const Frame& frame) {
-                RenderStats stats;
-                RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
-            });
-        result.errors = diagnostics.ErrorCount();
-    }
-    result.messages = captured.Text();
+    const test::RibRenderResult rendered = test::RenderRibString(rib, "card.rib");
+    result.errors = rendered.errors;
+    result.messages = rendered.messages;
     auto in = OIIO::ImageInput::open(image);
     if (!in) return result;
     std::vector<float> pixels(4 * 4 * 4);
