@@ -88,7 +88,9 @@ std::string FormatForFileName(const std::string& fileName) {
     extension.erase(0, 1);
     const std::string builtIn = BuiltInFormatForExtension(extension);
     if (!builtIn.empty()) return builtIn;
-    return LoadOiioPlugin("the file name \"" + fileName + "\" (a format by its extension)")
+    return LoadOiioPlugin("the format of \"" + fileName +
+                          "\" (an extension the built-in TIFF, PNG, OpenEXR and zfile drivers "
+                          "do not know)")
         .FormatForExtension(Lowercase(extension));
 }
 
