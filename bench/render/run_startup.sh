@@ -18,11 +18,14 @@ for format in tif png exr; do
         > "$work/empty_$format.rib"
 done
 
-# median COMMAND...: the median wall-clock time of 30 runs, in milliseconds.
+# median COMMAND...: the median wall-clock time of 30 runs in milliseconds (with hyperfine also
+# the mean CPU time, user + system, which a loaded machine inflates less).
 median() {
     if command -v hyperfine > /dev/null; then
-        (cd "$work" && hyperfine -N -w 3 -r 30 --export-json "$work/h.json" "$*" > /dev/null)
-        python3 -c 'import json,sys; print("%.1f" % (1000 * json.load(open(sys.argv[1]))["results"][0]["median"]))' "$work/h.json"
+        (cd "$work" && hyperfine -N -w 3 -r 30 --export-json "$work/h.json" "$*" > /dev/null 2>&1)
+        python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["results"][0]
+print("%.1f ms (CPU %.1f ms)" % (1000 * r["median"], 1000 * (r["user"] + r["system"])))' \
+            "$work/h.json"
         return
     fi
     local times=() start end
@@ -32,15 +35,16 @@ median() {
         end=$(date +%s%N)
         times+=($(((end - start) / 1000)))
     done
-    printf '%s\n' "${times[@]}" | sort -n | awk '{ t[NR] = $1 } END { printf "%.1f\n", t[int((NR + 1) / 2)] / 1000 }'
+    printf '%s\n' "${times[@]}" | sort -n |
+        awk '{ t[NR] = $1 } END { printf "%.1f ms\n", t[int((NR + 1) / 2)] / 1000 }'
 }
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
      "load $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "gonio: $gonio ($(ldd "$gonio" | wc -l) shared libraries)"
-echo "catrib, 2-line RIB:        $(median "$gonio" catrib "$work/two.rib") ms (median)"
-echo "shader plastic.sl:         $(median "$gonio" shader "$shader") ms"
-echo "brdf --help:               $(median "$gonio" brdf --help) ms"
+echo "catrib, 2-line RIB:        $(median "$gonio" catrib "$work/two.rib")"
+echo "shader plastic.sl:         $(median "$gonio" shader "$shader")"
+echo "brdf --help:               $(median "$gonio" brdf --help)"
 for format in tif png exr; do
-    echo "render empty 1x1, .$format:   $(median "$gonio" render "$work/empty_$format.rib") ms"
+    echo "render empty 1x1, .$format:   $(median "$gonio" render "$work/empty_$format.rib")"
 done
