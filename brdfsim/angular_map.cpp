@@ -1,18 +1,16 @@
 #include "brdfsim/angular_map.h"
 
-#include <OpenImageIO/imageio.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "base/math.h"
+#include "imageio/image_formats.h"
 
 namespace gonio {
 
@@ -101,24 +99,18 @@ AngularMapResult WriteAngularMap(const Brdf& brdf, const AngularMapOptions& opti
             std::copy(c.begin(), c.end(), &pixels[(static_cast<std::size_t>(y) * width + x) * 3]);
         }
     }
-    const std::string temp = path + ".tmp." + std::to_string(::getpid());
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw std::runtime_error(path + ": no image writer for this file type");
-    OIIO::ImageSpec spec(width, size, 3, OIIO::TypeDesc::UINT8);
-    const std::string ext = path.substr(path.find_last_of('.') + 1);
-    if (ext == "exr" || ext == "hdr") spec.set_format(OIIO::TypeDesc::FLOAT);
-    spec.attribute("ImageDescription", "gonio brdf map: theta_light " +
-                                           std::to_string(options.thetaLight) + " phi_light " +
-                                           std::to_string(options.phiLight));
-    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
-        !out->close()) {
-        std::remove(temp.c_str());
-        throw std::runtime_error(path + ": cannot write the map: " + out->geterror());
-    }
-    if (std::rename(temp.c_str(), path.c_str()) != 0) {
-        std::remove(temp.c_str());
-        throw std::runtime_error(path + ": cannot write the map");
-    }
+    const std::string format = FormatForFileName(path);
+    if (format.empty()) throw std::runtime_error(path + ": no image writer for this file type");
+    ImageFileSpec spec;
+    spec.width = width, spec.height = size;
+    spec.channelNames = {"R", "G", "B"};
+    spec.fileType = format == "openexr" || format == "hdr" ? PixelType::Float : PixelType::UInt8;
+    spec.attributes = {{"ImageDescription", "gonio brdf map: theta_light " +
+                                                std::to_string(options.thetaLight) + " phi_light " +
+                                                std::to_string(options.phiLight)}};
+    const std::string error =
+        WriteImageFile(format, path, spec, PixelBuffer{PixelType::Float, pixels.data()});
+    if (!error.empty()) throw std::runtime_error(path + ": cannot write the map: " + error);
     AngularMapResult result;
     result.maxValue = *std::max_element(rowMax.begin(), rowMax.end());
     return result;

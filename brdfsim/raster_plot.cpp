@@ -1,20 +1,19 @@
 #include "brdfsim/raster_plot.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
+
+#include "imageio/image_formats.h"
+#include "imageio/oiio_plugin.h"
 
 namespace gonio {
 
 namespace {
 
-namespace IBA = OIIO::ImageBufAlgo;
+using Align = PlotCanvas::Align;
 using Rgb = std::array<float, 3>;
 
 // Drawn at twice the size and box-filtered down: render_line draws aliased one-pixel lines.
@@ -52,12 +51,10 @@ class Canvas {
   public:
     Canvas(const PlotLayout& layout, std::string path)
         : path_(std::move(path)),
-          image_(OIIO::ImageSpec(layout.Width() * kScale, layout.Height() * kScale, 3,
-                                 OIIO::TypeDesc::FLOAT)),
-          frame_(S(layout.Left()), S(layout.Left() + layout.PlotWidth()) + 1, S(layout.Top()),
-                 S(layout.Top() + layout.PlotHeight()) + 1) {
-        IBA::fill(image_, {1.0f, 1.0f, 1.0f});
-    }
+          canvas_(LoadOiioPlugin("the raster plot \"" + path_ + "\" (its text)")
+                      .NewPlotCanvas(layout.Width() * kScale, layout.Height() * kScale)),
+          frame_{S(layout.Left()), S(layout.Left() + layout.PlotWidth()) + 1, S(layout.Top()),
+                 S(layout.Top() + layout.PlotHeight()) + 1} {}
 
     // Layout pixels to canvas pixels.
     static int S(double v) { return static_cast<int>(std::lround(v * kScale)); }
@@ -68,11 +65,10 @@ class Canvas {
               bool clip) {
         const int n = std::max(1, static_cast<int>(std::lround(width * kScale)));
         const int lo = -(n - 1) / 2, hi = n / 2;
-        const OIIO::ROI roi = clip ? frame_ : image_.roi();
         for (int dy = lo; dy <= hi; ++dy) {
             for (int dx = lo; dx <= hi; ++dx) {
-                IBA::render_line(image_, S(x0) + dx, S(y0) + dy, S(x1) + dx, S(y1) + dy, colour,
-                                 false, roi);
+                canvas_->Line(S(x0) + dx, S(y0) + dy, S(x1) + dx, S(y1) + dy, colour.data(),
+                              clip ? &frame_ : nullptr);
             }
         }
     }
@@ -105,64 +101,49 @@ class Canvas {
         }
     }
 
-    void Text(double x, double y, const std::string& text, int size, IBA::TextAlignX align) {
+    void Text(double x, double y, const std::string& text, int size, Align align) {
         if (text.empty()) return;
-        if (!IBA::render_text(image_, S(x), S(y), text, size * kScale, kPlotFont, kBlack, align,
-                              IBA::TextAlignY::Baseline)) {
-            throw std::runtime_error(path_ + ": cannot draw the plot's text: " + image_.geterror() +
-                                     " (the font " + kPlotFont +
-                                     " comes with Debian's fonts-dejavu-core)");
-        }
+        const std::string error = canvas_->Text(S(x), S(y), text, size * kScale, kPlotFont, align);
+        if (!error.empty()) FontMissing(error);
     }
 
-    // Text turned 90° counter-clockwise, centred on (x, y): drawn upright, then rotated.
+    // Text turned 90° counter-clockwise, centred on (x, y).
     void VerticalText(double x, double y, const std::string& text, int size) {
         if (text.empty()) return;
-        const OIIO::ROI box = IBA::text_size(text, size * kScale, kPlotFont);
-        if (!box.defined()) {
-            throw std::runtime_error(path_ + ": cannot draw the plot's text (the font " +
-                                     kPlotFont + " comes with Debian's fonts-dejavu-core)");
-        }
-        OIIO::ImageBuf upright(
-            OIIO::ImageSpec(box.width() + 4, box.height() + 4, 3, OIIO::TypeDesc::FLOAT));
-        IBA::fill(upright, {1.0f, 1.0f, 1.0f});
-        IBA::render_text(upright, 2 - box.xbegin, 2 - box.ybegin, text, size * kScale, kPlotFont,
-                         kBlack);
-        const OIIO::ImageBuf turned = IBA::rotate270(upright);
-        IBA::paste(image_, S(x) - turned.spec().width / 2, S(y) - turned.spec().height / 2, 0, 0,
-                   turned);
+        const std::string error = canvas_->VerticalText(S(x), S(y), text, size * kScale, kPlotFont);
+        if (!error.empty()) FontMissing(error);
     }
 
-    void Write(int width, int height) {
-        auto writer = OIIO::ImageOutput::create(path_);
-        if (!writer) throw std::runtime_error(path_ + ": no image writer for this file type");
-        const std::string format = writer->format_name();
-        const OIIO::ImageBuf small =
-            IBA::resize(image_, "box", 0.0f, OIIO::ROI(0, width, 0, height, 0, 1, 0, 3));
+    // Box-filtered down to the layout's size; float for OpenEXR and HDR files, else 8 bits.
+    void Write(const std::string& format, int width, int height) {
+        const std::vector<float> pixels = canvas_->Downsampled(width, height);
+        ImageFileSpec spec;
+        spec.width = width, spec.height = height;
+        spec.channelNames = {"R", "G", "B"};
         const bool floats = format == "openexr" || format == "hdr";
-        const std::string temp = path_ + ".tmp." + std::to_string(::getpid());
-        if (small.has_error() ||
-            !small.write(temp, floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, format)) {
-            std::remove(temp.c_str());
-            throw std::runtime_error(path_ + ": cannot write the plot: " + small.geterror());
-        }
-        if (std::rename(temp.c_str(), path_.c_str()) != 0) {
-            std::remove(temp.c_str());
-            throw std::runtime_error(path_ + ": cannot write the plot");
-        }
+        spec.fileType = floats ? PixelType::Float : PixelType::UInt8;
+        const std::string error =
+            WriteImageFile(format, path_, spec, PixelBuffer{PixelType::Float, pixels.data()});
+        if (!error.empty()) throw std::runtime_error(path_ + ": cannot write the plot: " + error);
     }
 
   private:
+    [[noreturn]] void FontMissing(const std::string& error) const {
+        throw std::runtime_error(path_ + ": cannot draw the plot's text: " + error + " (the font " +
+                                 kPlotFont + " comes with Debian's fonts-dejavu-core)");
+    }
+
     std::string path_;
-    OIIO::ImageBuf image_;
-    OIIO::ROI frame_;
+    std::unique_ptr<PlotCanvas> canvas_;
+    PlotCanvas::Box frame_;
 };
 
 }  // namespace
 
 void WriteRasterPlot(const std::string& path, const PlotLabels& utf8Labels,
                      const std::vector<PlotSeries>& utf8Series, const PlotOptions& options) {
-    if (!OIIO::ImageOutput::create(path)) {  // before any drawing: a clear error, no file
+    const std::string format = FormatForFileName(path);
+    if (format.empty()) {  // before any drawing: a clear error, no file
         throw std::runtime_error(path + ": no image writer for this file type");
     }
     // The legend's width follows the labels as they will be drawn.
@@ -176,17 +157,17 @@ void WriteRasterPlot(const std::string& path, const PlotLabels& utf8Labels,
     const double right = left + layout.PlotWidth(), bottom = top + layout.PlotHeight();
     for (double t : layout.XTicks()) {
         canvas.Line(layout.X(t), top, layout.X(t), bottom, kGrid, 1, false);
-        canvas.Text(layout.X(t), bottom + 18, TickText(t), 12, IBA::TextAlignX::Center);
+        canvas.Text(layout.X(t), bottom + 18, TickText(t), 12, Align::Center);
     }
     for (double t : layout.YTicks()) {
         canvas.Line(left, layout.Y(t), right, layout.Y(t), kGrid, 1, false);
-        canvas.Text(left - 8, layout.Y(t) + 4, TickText(t), 12, IBA::TextAlignX::Right);
+        canvas.Text(left - 8, layout.Y(t) + 4, TickText(t), 12, Align::Right);
     }
     canvas.Polyline({{left, top}, {right, top}, {right, bottom}, {left, bottom}, {left, top}},
                     kBlack, false, false, 1);
-    canvas.Text(left + layout.PlotWidth() / 2, 22, labels.title, 14, IBA::TextAlignX::Center);
+    canvas.Text(left + layout.PlotWidth() / 2, 22, labels.title, 14, Align::Center);
     canvas.Text(left + layout.PlotWidth() / 2, layout.Height() - 15, labels.xLabel, 12,
-                IBA::TextAlignX::Center);
+                Align::Center);
     canvas.VerticalText(20, top + layout.PlotHeight() / 2, labels.yLabel, 12);
     for (std::size_t i = 0; i < series.size(); ++i) {
         const PlotSeries& s = series[i];
@@ -199,9 +180,9 @@ void WriteRasterPlot(const std::string& path, const PlotLabels& utf8Labels,
         const double ly = layout.LegendY(static_cast<int>(i));
         canvas.Polyline({{layout.LegendLineX0(), ly}, {layout.LegendLineX1(), ly}}, colour,
                         s.dashed, false);
-        canvas.Text(layout.LegendTextX(), ly + 4, s.label, 10, IBA::TextAlignX::Left);
+        canvas.Text(layout.LegendTextX(), ly + 4, s.label, 10, Align::Left);
     }
-    canvas.Write(layout.Width(), layout.Height());
+    canvas.Write(format, layout.Width(), layout.Height());
 }
 
 }  // namespace gonio

@@ -1,7 +1,7 @@
 #pragma once
-// Plots drawn into an image (OpenImageIO's ImageBufAlgo render_line and render_text)
-// and written in any format OpenImageIO writes by extension (.png, .tif, .jpg, .exr, ...): the
-// same picture as svg_plot.h, for viewers and documents that want pixels.
+// Plots drawn into an image (OpenImageIO's ImageBufAlgo render_line and render_text, in the
+// OpenImageIO plugin: imageio/oiio_plugin.h) and written by extension (.png, .tif, .jpg, .exr,
+// ...): the same picture as svg_plot.h, for viewers and documents that want pixels.
 
 #include <string>
 #include <vector>

@@ -1,13 +1,16 @@
-// One of the two files of the viewer that include OpenImageIO (the other reads images).
 #include "viewer/image_export.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
+#include "imageio/image_formats.h"
 #include "viewer/reflectance_image.h"
 
 namespace gonio::viewer {
@@ -27,17 +30,29 @@ std::vector<uint8_t> SrgbBytes(const std::vector<float>& rgb) {
     return bytes;
 }
 
-// Writes through an in-memory proxy, so that no temporary file is needed.
-std::string Encode(const char* fileName, const OIIO::ImageSpec& spec, const void* pixels) {
-    std::vector<unsigned char> buffer;
-    OIIO::Filesystem::IOVecOutput proxy(buffer);
-    auto output = OIIO::ImageOutput::create(fileName);
-    if (!output || !output->set_ioproxy(&proxy))
-        throw ViewerError(std::string("cannot encode ") + fileName);
-    if (!output->open(fileName, spec) || !output->write_image(spec.format, pixels) ||
-        !output->close())
-        throw ViewerError(std::string("cannot encode ") + fileName + ": " + output->geterror());
-    return std::string(buffer.begin(), buffer.end());
+// The built-in drivers write files: a temporary one of this process, read back and removed.
+std::string Encode(const char* format, const char* extension, const ImageFileSpec& spec,
+                   const PixelBuffer& pixels) {
+    static std::atomic<unsigned> counter{0};
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() /
+        ("gonio_view_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + extension);
+    const std::string error = WriteImageFile(format, path.string(), spec, pixels);
+    if (!error.empty()) throw ViewerError(std::string("cannot encode the image: ") + error);
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << file.rdbuf();
+    std::filesystem::remove(path);
+    if (!file) throw ViewerError("cannot read back the encoded image");
+    return bytes.str();
+}
+
+ImageFileSpec RgbSpec(int width, int height, PixelType type) {
+    ImageFileSpec spec;
+    spec.width = width, spec.height = height;
+    spec.channelNames = {"R", "G", "B"};
+    spec.fileType = type;
+    return spec;
 }
 
 }  // namespace
@@ -51,12 +66,12 @@ ExportFormat ParseExportFormat(const std::string& name) {
 std::string EncodeImage(const std::vector<float>& rgb, int width, int height, ExportFormat format) {
     if (format == ExportFormat::Png) {
         const std::vector<uint8_t> bytes = SrgbBytes(rgb);
-        return Encode("relit.png", OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8),
-                      bytes.data());
+        return Encode("png", ".png", RgbSpec(width, height, PixelType::UInt8),
+                      PixelBuffer{PixelType::UInt8, bytes.data()});
     }
-    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    return Encode("relit.exr", spec, rgb.data());
+    ImageFileSpec spec = RgbSpec(width, height, PixelType::Float);
+    spec.compression = "zip";
+    return Encode("openexr", ".exr", spec, PixelBuffer{PixelType::Float, rgb.data()});
 }
 
 }  // namespace gonio::viewer

@@ -12,8 +12,8 @@ enum class ExportFormat { Png, Exr };
 // "png" or "exr"; throws ViewerError otherwise.
 ExportFormat ParseExportFormat(const std::string& name);
 
-// The file's bytes for linear RGB `rgb` (3 floats per pixel, top row first). Throws ViewerError
-// if OpenImageIO cannot encode it.
+// The file's bytes for linear RGB `rgb` (3 floats per pixel, top row first), written by the
+// built-in drivers (imageio/). Throws ViewerError if it cannot be encoded.
 std::string EncodeImage(const std::vector<float>& rgb, int width, int height, ExportFormat format);
 
 }  // namespace gonio::viewer

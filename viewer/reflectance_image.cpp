@@ -1,12 +1,13 @@
-// One of the two files of the viewer that include OpenImageIO (the other writes exports).
 #include "viewer/reflectance_image.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numeric>
 #include <regex>
+#include <stdexcept>
+
+#include "imageio/oiio_plugin.h"
 
 namespace gonio::viewer {
 
@@ -21,23 +22,37 @@ struct SpectralChannel {
     throw ViewerError(path + ": error: " + why);
 }
 
-std::vector<SpectralChannel> FindSpectralChannels(const OIIO::ImageSpec& spec) {
+std::vector<SpectralChannel> FindSpectralChannels(const ImageFileSpec& spec) {
     std::vector<SpectralChannel> channels;
-    for (int c = 0; c < spec.nchannels; ++c) {
+    for (int c = 0; c < spec.Channels(); ++c) {
         double nm = 0;
-        if (ParseSpectralChannelName(spec.channel_name(c), &nm)) channels.push_back({c, nm});
+        if (ParseSpectralChannelName(spec.channelNames[size_t(c)], &nm))
+            channels.push_back({c, nm});
     }
     std::sort(channels.begin(), channels.end(),
               [](const SpectralChannel& a, const SpectralChannel& b) { return a.nm < b.nm; });
     return channels;
 }
 
-std::vector<float> ReadAllChannels(OIIO::ImageInput& input, const OIIO::ImageSpec& spec,
-                                   const std::string& path) {
-    std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        Fail(path, "cannot read the pixels: " + input.geterror());
-    return pixels;
+// OpenEXR files begin with the magic number 20000630 (little-endian; OpenEXR file layout).
+bool IsOpenExr(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    unsigned char magic[4] = {0, 0, 0, 0};
+    file.read(reinterpret_cast<char*>(magic), 4);
+    return file && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01;
+}
+
+// Every channel, through the OpenImageIO plugin (loaded now, for this image).
+ImageFileContents ReadAllChannels(const std::string& path) {
+    std::string error;
+    ImageFileContents contents;
+    try {
+        contents = LoadOiioPlugin("the reflectance image \"" + path + "\"").ReadImage(path, &error);
+    } catch (const std::runtime_error& e) {
+        Fail(path, e.what());
+    }
+    if (!error.empty()) Fail(path, "cannot read the image: " + error);
+    return contents;
 }
 
 // Copies the channels `indices` of every pixel, in that order, into a pixel-major array.
@@ -51,12 +66,12 @@ std::vector<float> GatherChannels(const std::vector<float>& pixels, int channelC
     return result;
 }
 
-std::vector<int> PreviewChannels(const OIIO::ImageSpec& spec) {
+std::vector<int> PreviewChannels(const ImageFileSpec& spec) {
     std::vector<int> indices;
     for (const char* name : {"R", "G", "B"}) {
-        const int index = spec.channelindex(name);
-        if (index < 0) return {};
-        indices.push_back(index);
+        const auto found = std::find(spec.channelNames.begin(), spec.channelNames.end(), name);
+        if (found == spec.channelNames.end()) return {};
+        indices.push_back(int(found - spec.channelNames.begin()));
     }
     return indices;
 }
@@ -74,12 +89,13 @@ bool ParseSpectralChannelName(const std::string& name, double* nm) {
 }
 
 ReflectanceImage ReadReflectanceImage(const std::string& path) {
-    auto input = OIIO::ImageInput::open(path);
-    if (!input) Fail(path, "cannot open the image: " + OIIO::geterror());
-    if (std::string(input->format_name()) != "openexr")
-        Fail(path, std::string("not an OpenEXR file (it is ") + input->format_name() +
-                       "): the viewer reads the spectral EXR of Display \"openexr\" \"spectral\"");
-    const OIIO::ImageSpec spec = input->spec();
+    if (!std::ifstream(path)) Fail(path, "cannot open the image");
+    if (!IsOpenExr(path))
+        Fail(path,
+             "not an OpenEXR file: the viewer reads the spectral EXR of Display \"openexr\" "
+             "\"spectral\"");
+    const ImageFileContents contents = ReadAllChannels(path);
+    const ImageFileSpec& spec = contents.spec;
     const std::vector<SpectralChannel> channels = FindSpectralChannels(spec);
     if (channels.size() < 3)
         Fail(path,
@@ -90,7 +106,7 @@ ReflectanceImage ReadReflectanceImage(const std::string& path) {
         if (channels[k].nm == channels[k - 1].nm)
             Fail(path, "two spectral channels at " + std::to_string(channels[k].nm) + " nm");
 
-    const std::vector<float> pixels = ReadAllChannels(*input, spec, path);
+    const std::vector<float>& pixels = contents.pixels;
     ReflectanceImage image;
     image.path = path;
     image.width = spec.width;
@@ -100,12 +116,12 @@ ReflectanceImage ReadReflectanceImage(const std::string& path) {
         image.wavelengths.push_back(c.nm);
         indices.push_back(c.index);
     }
-    image.spectra = GatherChannels(pixels, spec.nchannels, indices);
+    image.spectra = GatherChannels(pixels, spec.Channels(), indices);
     if (!std::all_of(image.spectra.begin(), image.spectra.end(),
                      [](float v) { return std::isfinite(v); }))
         Fail(path, "a spectral sample is not a finite number");
     const std::vector<int> preview = PreviewChannels(spec);
-    if (!preview.empty()) image.previewRgb = GatherChannels(pixels, spec.nchannels, preview);
+    if (!preview.empty()) image.previewRgb = GatherChannels(pixels, spec.Channels(), preview);
     return image;
 }
 

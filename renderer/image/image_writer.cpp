@@ -1,8 +1,5 @@
-// The one file of the renderer that includes OpenImageIO (STYLE.md habit 3).
+// The imaging pipeline of a Display; the file itself is written by imageio/'s drivers.
 #include "renderer/image/image_writer.h"
-
-#include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -10,8 +7,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <set>
+#include <stdexcept>
+
+#include "imageio/image_formats.h"
 
 namespace gonio {
 
@@ -32,43 +31,14 @@ std::string Lowercase(std::string text) {
     return text;
 }
 
-// OpenImageIO's format for a file extension, from its own "extension_list".
-std::string FormatForExtension(const std::string& extension) {
-    static const std::map<std::string, std::string> formats = [] {
-        std::map<std::string, std::string> result;
-        std::string list = OIIO::get_string_attribute("extension_list");
-        size_t start = 0;
-        while (start < list.size()) {
-            size_t end = list.find(';', start);
-            if (end == std::string::npos) end = list.size();
-            std::string entry = list.substr(start, end - start);
-            size_t colon = entry.find(':');
-            if (colon != std::string::npos) {
-                std::string format = entry.substr(0, colon);
-                size_t e = colon + 1;
-                while (e < entry.size()) {
-                    size_t comma = entry.find(',', e);
-                    if (comma == std::string::npos) comma = entry.size();
-                    result.emplace(entry.substr(e, comma - e), format);
-                    e = comma + 1;
-                }
-            }
-            start = end + 1;
-        }
-        return result;
-    }();
-    auto found = formats.find(Lowercase(extension));
-    return found == formats.end() ? std::string() : found->second;
-}
-
-// The OpenImageIO format a Display writes; see image_writer.h for the rules.
+// The format a Display writes; see image_writer.h for the rules. Only a name whose extension
+// no built-in driver knows asks OpenImageIO (loading its plugin), and only when the type
+// leaves the choice to the extension.
 std::string ChooseFormat(const DisplaySpec& display, Diagnostics& diagnostics) {
     std::string type = Lowercase(display.type);
-    std::string extension = fs::path(display.name).extension().string();
-    if (!extension.empty()) extension.erase(0, 1);
-    std::string byExtension = FormatForExtension(extension);
     if (type == "openexr" || type == "exr") return "openexr";
     if (type == "png") return "png";
+    const std::string byExtension = FormatForFileName(display.name);
     if (type == "framebuffer" || type == "zframebuffer")
         diagnostics.NoteOnce("display-framebuffer", display.loc,
                              "Display type \"" + display.type +
@@ -80,8 +50,9 @@ std::string ChooseFormat(const DisplaySpec& display, Diagnostics& diagnostics) {
     diagnostics.WarningOnce(
         "display-type-" + type, display.loc,
         "unknown Display type \"" + display.type + "\"; writing " +
-            (byExtension.empty() ? std::string("TIFF")
-                                 : "the format of the extension ." + extension));
+            (byExtension.empty()
+                 ? std::string("TIFF")
+                 : "the format of the extension " + fs::path(display.name).extension().string()));
     return byExtension.empty() ? "tiff" : byExtension;
 }
 
@@ -161,7 +132,7 @@ uint32_t HashPixel(int x, int y, int channel) {
 }
 
 struct PixelData {
-    OIIO::TypeDesc format;  // of `bytes`
+    PixelType type;  // of `bytes`
     std::vector<unsigned char> bytes;
 };
 
@@ -210,36 +181,30 @@ PixelData ComputePixels(const Image& image, const std::vector<OutputChannel>& ch
     }
     PixelData data;
     if (writeFloat) {
-        data.format = OIIO::TypeDesc::FLOAT;  // OpenImageIO converts to half where asked
+        data.type = PixelType::Float;  // the driver converts to half where asked
         data.bytes.resize(values.size() * sizeof(float));
         std::copy(values.begin(), values.end(), reinterpret_cast<float*>(data.bytes.data()));
     } else if (NeedsSixteenBits(channels, colour, depth)) {
-        data.format = OIIO::TypeDesc::UINT16;
+        data.type = PixelType::UInt16;
         StoreCodes<uint16_t>(values, 65535.0f, data.bytes);
     } else {
-        data.format = OIIO::TypeDesc::UINT8;
+        data.type = PixelType::UInt8;
         StoreCodes<uint8_t>(values, 255.0f, data.bytes);
     }
     return data;
 }
 
-std::string TemporaryName(const std::string& name) {
-    fs::path path(name);
-    std::string temporary = "." + path.filename().string() + ".tmp" + std::to_string(getpid());
-    return (path.parent_path() / temporary).string();
-}
-
 // How the pixels are stored: float (half on request in OpenEXR) or integer codes.
-struct PixelType {
+struct StorageChoice {
     bool isFloat = false;
     bool half = false;
     Quantization colour, depth;
 };
 
-PixelType ChoosePixelType(const DisplaySpec& display, const std::string& format,
-                          const std::vector<OutputChannel>& channels, const Quantization& colour,
-                          const Quantization& depth, Diagnostics& diagnostics) {
-    PixelType type;
+StorageChoice ChooseStorage(const DisplaySpec& display, const std::string& format,
+                            const std::vector<OutputChannel>& channels, const Quantization& colour,
+                            const Quantization& depth, Diagnostics& diagnostics) {
+    StorageChoice type;
     type.colour = colour;
     type.depth = depth;
     bool wantFloat = format == "openexr";
@@ -260,59 +225,25 @@ PixelType ChoosePixelType(const DisplaySpec& display, const std::string& format,
     return type;
 }
 
-OIIO::ImageSpec MakeImageSpec(const Image& image, const std::vector<OutputChannel>& channels,
-                              OIIO::TypeDesc fileFormat, const ParamDict& params) {
-    OIIO::ImageSpec spec(image.width, image.height, int(channels.size()), fileFormat);
+ImageFileSpec MakeFileSpec(const Image& image, const std::vector<OutputChannel>& channels,
+                           PixelType fileType, const ParamDict& params) {
+    ImageFileSpec spec;
+    spec.width = image.width;
+    spec.height = image.height;
     // Data window: the crop window where it lies in the frame; display window: the frame.
     spec.x = image.xorigin;
     spec.y = image.yorigin;
-    spec.full_x = 0;
-    spec.full_y = 0;
-    spec.full_width = image.fullWidth > 0 ? image.fullWidth : image.width;
-    spec.full_height = image.fullHeight > 0 ? image.fullHeight : image.height;
-    spec.channelnames.clear();
+    spec.fullWidth = image.fullWidth;
+    spec.fullHeight = image.fullHeight;
     for (size_t c = 0; c < channels.size(); ++c) {
-        spec.channelnames.push_back(channels[c].name);
-        if (channels[c].kind == ChannelKind::Alpha) spec.alpha_channel = int(c);
-        if (channels[c].kind == ChannelKind::Depth) spec.z_channel = int(c);
+        spec.channelNames.push_back(channels[c].name);
+        if (channels[c].kind == ChannelKind::Alpha) spec.alphaChannel = int(c);
+        if (channels[c].kind == ChannelKind::Depth) spec.zChannel = int(c);
     }
-    const std::string compression = params.GetString("compression", "");
-    if (!compression.empty()) spec.attribute("compression", compression);
-    spec.attribute("Software", "gonio");
+    spec.fileType = fileType;
+    spec.compression = params.GetString("compression", "");
+    spec.attributes = {{"Software", "gonio"}};
     return spec;
-}
-
-// Writes under a temporary name in the same folder, then renames, so that readers never see a
-// partial file and a failure leaves nothing. Returns the reason on failure, "" on success.
-std::string WriteAtomically(const std::string& format, const std::string& name,
-                            const OIIO::ImageSpec& spec, const PixelData& data) {
-    fs::path folder = fs::path(name).parent_path();
-    std::error_code statError;
-    if (!folder.empty() && !fs::is_directory(folder, statError))
-        return "the folder \"" + folder.string() + "\" does not exist";
-    auto out = OIIO::ImageOutput::create(format);
-    if (!out) return "OpenImageIO has no writer for " + format + ": " + OIIO::geterror();
-    const std::string temporary = TemporaryName(name);
-    std::string error;
-    if (!out->open(temporary, spec)) {
-        error = out->geterror();
-    } else {
-        if (!out->write_image(data.format, data.bytes.data())) error = out->geterror();
-        if (!out->close() && error.empty()) error = out->geterror();
-    }
-    if (error.empty()) {
-        std::error_code renameError;
-        fs::rename(temporary, name, renameError);
-        if (!renameError) return "";
-        error = renameError.message();
-    }
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    if (error.empty()) return "the image writer failed without saying why";
-    // OpenImageIO names the file it was given; the user knows only the real name.
-    for (size_t at = error.find(temporary); at != std::string::npos; at = error.find(temporary))
-        error.replace(at, temporary.size(), name);
-    return error;
 }
 
 }  // namespace
@@ -386,20 +317,25 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     std::vector<OutputChannel> channels = SelectOutputChannels(display.mode, channelNames, error);
     if (channels.empty()) return fail(error);
 
-    const std::string format = ChooseFormat(display, diagnostics);
+    std::string format;
+    try {
+        format = ChooseFormat(display, diagnostics);
+    } catch (const std::runtime_error& e) {  // the OpenImageIO plugin is missing
+        return fail(e.what());
+    }
     if (display.mode == "spectral" && !NameSpectralChannels(display, format, channels, &error))
         return fail(error);
-    PixelType type = ChoosePixelType(display, format, channels, colour, depth, diagnostics);
+    StorageChoice type = ChooseStorage(display, format, channels, colour, depth, diagnostics);
     display.params.MarkRead("origin");  // accepted: a window position only a framebuffer uses
     PixelData data =
         ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
-    OIIO::TypeDesc fileFormat = type.half ? OIIO::TypeDesc::HALF : data.format;
-    OIIO::ImageSpec spec = MakeImageSpec(image, channels, fileFormat, display.params);
+    ImageFileSpec spec =
+        MakeFileSpec(image, channels, type.half ? PixelType::Half : data.type, display.params);
     if (display.mode == "spectral") {
-        spec.attribute("spectralLayoutVersion", "1.0");
-        spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
+        spec.attributes.emplace_back("spectralLayoutVersion", "1.0");
+        spec.attributes.emplace_back("emissiveUnits", "W.m^-2.sr^-1");
     }
-    error = WriteAtomically(format, display.name, spec, data);
+    error = WriteImageFile(format, display.name, spec, PixelBuffer{data.type, data.bytes.data()});
     display.params.ReportUnused("Display \"" + display.name + "\"", diagnostics);
     return error.empty() || fail(error);
 }

@@ -1,7 +1,8 @@
 #pragma once
-// Writes one Display of a resolved image to disk through OpenImageIO, after the RISpec imaging
-// pipeline (§4.1.3): exposure (gain, gamma) on colour, then quantization with dither and clamping.
-// This header knows nothing of OpenImageIO; image_writer.cpp is the one file that includes it.
+// Writes one Display of a resolved image to disk, after the RISpec imaging pipeline (§4.1.3):
+// exposure (gain, gamma) on colour, then quantization with dither and clamping. The file is
+// written by imageio/: built-in drivers for TIFF, PNG, OpenEXR and zfile, the OpenImageIO plugin
+// (loaded only then) for any other format.
 //
 // Choices made here (see README.md):
 //  * Display types "file", "tiff", "framebuffer" (with a one-time note: there is no window to
@@ -31,7 +32,7 @@ struct DisplaySpec {
     std::string name;  // the file name (a leading "+" already removed)
     std::string type;  // "file", "tiff", "openexr", "png", "framebuffer", ...
     std::string mode;  // "rgb", "rgba", "rgbz", "rgbaz", "a", "z", "az", or an AOV name
-    // Driver parameters, typed: "compression" (string, passed to OpenImageIO), "exrpixeltype"
+    // Driver parameters, typed: "compression" (string, as OpenImageIO names them), "exrpixeltype"
     // ("half" | "float"), "origin" (accepted; only a framebuffer would use it). Any other is
     // reported as having had no effect.
     ParamDict params;

@@ -1,6 +1,7 @@
 #pragma once
 // Filtered texture and environment lookups for the shading language, through OpenImageIO's
-// TextureSystem (mipmapped, cached; make tiled mipmaps with `maketx`). Thread-safe.
+// TextureSystem (mipmapped, cached; make tiled mipmaps with `maketx`) in the OpenImageIO
+// plugin, loaded at the first lookup. Thread-safe.
 
 #include <cstdint>
 #include <memory>
@@ -8,6 +9,8 @@
 #include <vector>
 
 namespace gonio {
+
+class TextureSystem;
 
 class TextureLookup {
   public:
@@ -30,10 +33,13 @@ class TextureLookup {
     // if the file cannot be read or lacks the fact.
     bool Info(const std::string& file, const std::string& dataname, std::vector<float>* floats,
               std::string* text);
-    // Why the last failed lookup failed.
+    // Why the last failed lookup failed (also when the plugin could not be loaded).
     std::string LastError() const;
 
   private:
+    // The plugin's texture system, made at the first lookup; null if the plugin is missing.
+    TextureSystem* System(const std::string& file);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

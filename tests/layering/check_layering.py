@@ -20,10 +20,11 @@ import sys
 FOLDERS = [
     "base", "renderer/rib", "renderer/geometry", "renderer/scene", "renderer/raytrace",
     "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "shaderlang",
-    "brdfsim", "spectral", "viewer", "cli",
+    "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "cli",
 ]
 # External libraries only some folders may see: the build keeps them private to those.
-GUARDED = ["embree3", "OpenImageIO", "Eigen", "httplib.h", "nlohmann"]
+GUARDED = ["embree3", "OpenImageIO", "OpenEXR", "tiffio.h", "png.h", "Eigen", "httplib.h",
+           "nlohmann"]
 SOURCE_SUFFIXES = (".h", ".cpp", ".y", ".l")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^">]+)[">]')
 
@@ -70,7 +71,10 @@ def owner(path):
 def check_folder(root, folder, public):
     folders, guarded = allowed_of(root, folder)
     errors = []
-    for directory, _, files in os.walk(os.path.join(root, folder)):
+    for directory, subfolders, files in os.walk(os.path.join(root, folder)):
+        # A subfolder that is a library of its own (imageio/oiio) is checked as that library.
+        subfolders[:] = [d for d in subfolders
+                         if os.path.relpath(os.path.join(directory, d), root) not in FOLDERS]
         for name in sorted(files):
             if not name.endswith(SOURCE_SUFFIXES):
                 continue

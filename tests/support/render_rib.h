@@ -24,7 +24,8 @@ inline RibRenderResult RenderRibString(const std::string& rib, const std::string
         Diagnostics& diagnostics = captured.Get();
         BuildScene(
             name, [&](RiTarget& target, Diagnostics& d) { ParseRibString(rib, name, target, d); },
-            diagnostics, [&](const Frame& frame) {
+            diagnostics,
+            [&](const Frame& frame) {
                 RenderStats stats;
                 RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
             });

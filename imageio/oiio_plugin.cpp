@@ -1,0 +1,54 @@
+// Opens the OpenImageIO plugin with dlopen (oiio_plugin.h says why it is a plugin).
+#include "imageio/oiio_plugin.h"
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+namespace gonio {
+
+namespace {
+
+// $GONIO_OIIO_PLUGIN, else libgonio_oiio.so in the folder of the running executable, so that
+// build/bin/gonio finds build/bin/libgonio_oiio.so wherever it is called from.
+std::string PluginPath() {
+    if (const char* path = std::getenv("GONIO_OIIO_PLUGIN"); path && *path) return path;
+    std::error_code error;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    return (error ? std::filesystem::path("libgonio_oiio.so")
+                  : exe.parent_path() / "libgonio_oiio.so")
+        .string();
+}
+
+struct Loaded {
+    OiioPlugin* plugin = nullptr;
+    std::string error;  // why it could not be opened
+};
+
+Loaded Open() {
+    const std::string path = PluginPath();
+    // RTLD_LOCAL: the plugin's OpenImageIO symbols stay out of the executable's namespace.
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) return {nullptr, dlerror()};
+    auto entry = reinterpret_cast<OiioPluginEntry>(dlsym(handle, kOiioPluginEntry));
+    if (!entry) return {nullptr, path + ": no " + kOiioPluginEntry + " in it"};
+    return {entry(), ""};
+}
+
+}  // namespace
+
+OiioPlugin& LoadOiioPlugin(const std::string& purpose) {
+    static std::once_flag once;
+    static Loaded loaded;
+    std::call_once(once, [] { loaded = Open(); });
+    if (!loaded.plugin)
+        throw std::runtime_error(purpose +
+                                 " needs OpenImageIO, whose plugin could not be loaded (" +
+                                 loaded.error + ")");
+    return *loaded.plugin;
+}
+
+}  // namespace gonio

@@ -1,0 +1,126 @@
+// TIFF through libtiff, tagged as OpenImageIO 2.4's TIFF writer tags it: strips of 32 rows,
+// deflate with the horizontal (integer) or floating-point predictor by default, associated
+// alpha, the data window's origin as XPosition/YPosition and the frame as Pixar's full size.
+#include <tiffio.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "imageio/builtin_drivers.h"
+
+namespace gonio {
+
+namespace {
+
+constexpr int kRowsPerStrip = 32;
+
+int CompressionCode(const std::string& name) {
+    if (name == "none") return COMPRESSION_NONE;
+    if (name == "lzw") return COMPRESSION_LZW;
+    if (name == "packbits") return COMPRESSION_PACKBITS;
+    return COMPRESSION_ADOBE_DEFLATE;  // "zip" and anything OpenImageIO does not know
+}
+
+int BitsPerSample(PixelType type) {
+    return type == PixelType::UInt8 ? 8 : type == PixelType::UInt16 ? 16 : 32;
+}
+
+void SetCompression(TIFF* tif, const ImageFileSpec& spec, PixelType type) {
+    const auto [name, quality] =
+        SplitCompression(spec.compression.empty() ? "zip" : spec.compression);
+    const int code = CompressionCode(name);
+    TIFFSetField(tif, TIFFTAG_COMPRESSION, code);
+    if (code != COMPRESSION_LZW && code != COMPRESSION_ADOBE_DEFLATE) return;
+    TIFFSetField(tif, TIFFTAG_PREDICTOR,
+                 type == PixelType::Float ? PREDICTOR_FLOATINGPOINT : PREDICTOR_HORIZONTAL);
+    if (code == COMPRESSION_ADOBE_DEFLATE)
+        TIFFSetField(tif, TIFFTAG_ZIPQUALITY, std::clamp(quality > 0 ? quality : 6, 1, 9));
+}
+
+void SetExtraSamples(TIFF* tif, const ImageFileSpec& spec) {
+    const int n = spec.Channels();
+    if (spec.alphaChannel < 0 && n <= 3) return;
+    const int colour = n >= 3 ? 3 : 1;
+    std::vector<uint16_t> extra(size_t(n - colour), EXTRASAMPLE_UNSPECIFIED);
+    for (int c = colour; c < n; ++c)
+        if (spec.alphaChannel == c) extra[c - colour] = EXTRASAMPLE_ASSOCALPHA;
+    TIFFSetField(tif, TIFFTAG_EXTRASAMPLES, uint16_t(extra.size()), extra.data());
+}
+
+void SetWindows(TIFF* tif, const ImageFileSpec& spec) {
+    if (spec.FullWidth() != spec.width || spec.FullHeight() != spec.height) {
+        TIFFSetField(tif, TIFFTAG_PIXAR_IMAGEFULLWIDTH, uint32_t(spec.FullWidth()));
+        TIFFSetField(tif, TIFFTAG_PIXAR_IMAGEFULLLENGTH, uint32_t(spec.FullHeight()));
+    }
+    if (spec.x || spec.y) {  // TIFF cannot hold a negative origin
+        TIFFSetField(tif, TIFFTAG_XPOSITION, std::max(0.0f, float(spec.x)));
+        TIFFSetField(tif, TIFFTAG_YPOSITION, std::max(0.0f, float(spec.y)));
+    }
+}
+
+void SetMetadata(TIFF* tif, const ImageFileSpec& spec) {
+    bool dated = false;
+    for (const auto& [name, value] : spec.attributes) {
+        if (name == "Software") TIFFSetField(tif, TIFFTAG_SOFTWARE, value.c_str());
+        if (name == "ImageDescription") TIFFSetField(tif, TIFFTAG_IMAGEDESCRIPTION, value.c_str());
+        if (name == "Artist") TIFFSetField(tif, TIFFTAG_ARTIST, value.c_str());
+        if (name == "Copyright") TIFFSetField(tif, TIFFTAG_COPYRIGHT, value.c_str());
+        if (name == "DateTime") TIFFSetField(tif, TIFFTAG_DATETIME, value.c_str()), dated = true;
+    }
+    if (!dated) TIFFSetField(tif, TIFFTAG_DATETIME, CurrentDateTime().c_str());
+}
+
+// libtiff reports errors through a global handler; the last one is kept for the caller.
+thread_local std::string tiffError;
+
+void KeepError(const char* module, const char* format, va_list args) {
+    char text[512];
+    std::vsnprintf(text, sizeof text, format, args);
+    tiffError = module ? std::string(module) + ": " + text : text;
+}
+
+}  // namespace
+
+std::string WriteTiffFile(const std::string& path, const ImageFileSpec& spec,
+                          const PixelBuffer& pixels) {
+    TIFFSetErrorHandler(KeepError);
+    TIFFSetWarningHandler(nullptr);
+    tiffError.clear();
+    std::unique_ptr<TIFF, void (*)(TIFF*)> tif(TIFFOpen(path.c_str(), "w"), TIFFClose);
+    if (!tif) return "could not open \"" + path + "\"";
+    const int n = spec.Channels();
+    TIFFSetField(tif.get(), TIFFTAG_IMAGEWIDTH, uint32_t(spec.width));
+    TIFFSetField(tif.get(), TIFFTAG_IMAGELENGTH, uint32_t(spec.height));
+    SetWindows(tif.get(), spec);
+    TIFFSetField(tif.get(), TIFFTAG_ROWSPERSTRIP, uint32_t(kRowsPerStrip));
+    TIFFSetField(tif.get(), TIFFTAG_SAMPLESPERPIXEL, uint16_t(n));
+    TIFFSetField(tif.get(), TIFFTAG_ORIENTATION, ORIENTATION_TOPLEFT);
+    TIFFSetField(tif.get(), TIFFTAG_BITSPERSAMPLE, uint16_t(BitsPerSample(pixels.type)));
+    TIFFSetField(tif.get(), TIFFTAG_SAMPLEFORMAT,
+                 pixels.type == PixelType::Float ? SAMPLEFORMAT_IEEEFP : SAMPLEFORMAT_UINT);
+    SetCompression(tif.get(), spec, pixels.type);
+    TIFFSetField(tif.get(), TIFFTAG_PHOTOMETRIC, n >= 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
+    SetExtraSamples(tif.get(), spec);
+    TIFFSetField(tif.get(), TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+    SetMetadata(tif.get(), spec);
+    TIFFCheckpointDirectory(tif.get());  // the directory first, as OpenImageIO lays files out
+    // Strip by strip, as OpenImageIO writes; libtiff encodes in place (the predictor), so each
+    // strip is copied first.
+    const size_t rowBytes = size_t(spec.width) * n * BitsPerSample(pixels.type) / 8;
+    std::vector<unsigned char> strip(rowBytes * kRowsPerStrip);
+    for (int y = 0; y < spec.height; y += kRowsPerStrip) {
+        const size_t bytes = rowBytes * size_t(std::min(kRowsPerStrip, spec.height - y));
+        std::memcpy(strip.data(), static_cast<const unsigned char*>(pixels.data) + y * rowBytes,
+                    bytes);
+        if (TIFFWriteEncodedStrip(tif.get(), uint32_t(y / kRowsPerStrip), strip.data(),
+                                  tmsize_t(bytes)) < 0)
+            return tiffError.empty() ? "libtiff could not write a strip" : tiffError;
+    }
+    if (!TIFFFlush(tif.get())) return tiffError.empty() ? "libtiff could not write" : tiffError;
+    return "";
+}
+
+}  // namespace gonio

@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Checks that gonio loads OpenImageIO only when a scene needs it (issue 21): the executable
+does not link it; a render without textures writing TIFF, PNG and OpenEXR never loads it (the
+dynamic loader's own record, LD_DEBUG=files, of every object the process opened, dlopen
+included); a textured scene loads the plugin and renders the texture's colour; and without the
+plugin, what needed it says so while the built-in formats still work.
+
+    startup_checks.py --gonio build/bin/gonio"""
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+from analytic_checks import run_checks, Workspace, expect, read_images
+
+SCENE = """Format 8 6 1
+PixelSamples 1 1
+PixelFilter "box" 1 1
+Quantize "rgba" 0 0 0 0
+{displays}
+Projection "orthographic"
+Translate 0 0 5
+WorldBegin
+Surface "{surface}"
+Polygon "P" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]
+WorldEnd
+"""
+
+SHADERS = {
+    "flat.sl": "surface flat() { Ci = color(0.25, 0.5, 0.75); Oi = 1; }",
+    "textured.sl": 'surface textured() { Ci = color texture("tex.tif", 0.5, 0.5); Oi = 1; }',
+}
+
+BUILT_IN = ('Display "out.tif" "tiff" "rgba"\nDisplay "+out.png" "png" "rgb"\n'
+            'Display "+out.exr" "openexr" "rgba"')
+
+
+def render_traced(ws, rib, name, env=None):
+    """Renders `rib`; returns the process and the shared objects the loader opened."""
+    scene = ws.path(name + ".rib")
+    with open(scene, "w") as f:
+        f.write(rib)
+    environment = dict(os.environ, LD_DEBUG="files", **(env or {}))
+    proc = subprocess.run([ws.gonio, "render", scene], cwd=ws.dir, capture_output=True,
+                          text=True, env=environment)
+    loaded = [line.split("file=")[1].split()[0] for line in proc.stderr.splitlines()
+              if "file=" in line]
+    return proc, loaded
+
+
+def uses_oiio(loaded):
+    return [name for name in loaded if "OpenImageIO" in name or "gonio_oiio" in name]
+
+
+def check_executable_does_not_link_oiio(ws):
+    libraries = subprocess.run(["ldd", ws.gonio], capture_output=True, text=True).stdout
+    expect("OpenImageIO" not in libraries, f"gonio links OpenImageIO:\n{libraries}")
+
+
+def check_render_without_textures_loads_no_oiio(ws):
+    proc, loaded = render_traced(ws, SCENE.format(displays=BUILT_IN, surface="flat"), "flat")
+    expect(proc.returncode == 0, f"the render failed:\n{proc.stderr[-2000:]}")
+    expect(len(loaded) > 3, f"LD_DEBUG=files recorded only {loaded}: the check would see nothing")
+    expect(not uses_oiio(loaded), f"a render without textures loaded {uses_oiio(loaded)}")
+    for image in read_images(ws.path("out.tif"), ws.path("out.png"), ws.path("out.exr")):
+        got = image.pixels[(4, 3)][:3]
+        expect(all(abs(a - b) < 0.5 / 255 for a, b in zip(got, (0.25, 0.5, 0.75))),
+               f"pixel (4, 3) is {got}, expected 0.25 0.5 0.75")
+
+
+def check_texture_loads_the_plugin(ws):
+    subprocess.run(["oiiotool", "--pattern", "constant:color=0.125,0.25,0.625", "16x16", "3",
+                    "-d", "float", "-o", ws.path("tex.tif")], check=True, capture_output=True)
+    rib = SCENE.format(displays='Display "tex_out.tif" "tiff" "rgba"', surface="textured")
+    proc, loaded = render_traced(ws, rib, "textured")
+    expect(proc.returncode == 0, f"the render failed:\n{proc.stderr[-2000:]}")
+    expect(any("gonio_oiio" in name for name in loaded),
+           f"a textured scene did not load the plugin: {loaded}")
+    (image,) = read_images(ws.path("tex_out.tif"))
+    got = image.pixels[(4, 3)][:3]
+    expect(all(abs(a - b) < 1e-5 for a, b in zip(got, (0.125, 0.25, 0.625))),
+           f"pixel (4, 3) is {got}, expected the texture's 0.125 0.25 0.625")
+
+
+def check_missing_plugin_is_a_clear_error(ws):
+    missing = {"GONIO_OIIO_PLUGIN": ws.path("no/libgonio_oiio.so")}
+    proc, _ = render_traced(ws, SCENE.format(displays=BUILT_IN, surface="flat"), "noplugin",
+                            missing)
+    expect(proc.returncode == 0, f"built-in formats need no plugin, yet:\n{proc.stderr[-2000:]}")
+    rib = SCENE.format(displays='Display "photo.jpg" "file" "rgb"', surface="flat")
+    proc, _ = render_traced(ws, rib, "jpeg", missing)
+    errors = [line for line in proc.stderr.splitlines() if "error:" in line]
+    expect(proc.returncode != 0 and any("photo.jpg" in e and "OpenImageIO" in e for e in errors),
+           f"writing a JPEG without the plugin: exit {proc.returncode}, errors {errors}")
+    rib = SCENE.format(displays='Display "t.tif" "tiff" "rgba"', surface="textured")
+    proc, _ = render_traced(ws, rib, "texnoplugin", missing)
+    warnings = [line for line in proc.stderr.splitlines() if "warning:" in line]
+    expect(any("tex.tif" in w and "OpenImageIO" in w for w in warnings),
+           f"a texture without the plugin: warnings {warnings}")
+
+
+CHECKS = [check_executable_does_not_link_oiio, check_render_without_textures_loads_no_oiio,
+          check_texture_loads_the_plugin, check_missing_plugin_is_a_clear_error]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--gonio", required=True)
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix="gonio_startup_") as root:
+        ws = Workspace(os.path.abspath(args.gonio), root)
+        for name, source in SHADERS.items():
+            with open(ws.path(name), "w") as f:
+                f.write(source + "\n")
+        return run_checks(CHECKS, ws)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
