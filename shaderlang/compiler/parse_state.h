@@ -1,7 +1,9 @@
 #pragma once
 // State shared by the reentrant lexer and the grammar of one parse (internal to the compiler).
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "base/diagnostics.h"
 #include "shaderlang/compiler/ast.h"
@@ -16,6 +18,8 @@ struct ParseState {
     int line = 1;
     int column = 1;
     int errors = 0;
+    // The parser's stacks once they outgrow their first 200 entries (sl_grammar.y's yyoverflow).
+    std::vector<std::unique_ptr<char[]>> parserStacks;
 
     void Error(const SourceLoc& loc, const std::string& message) {
         ++errors;

@@ -22,6 +22,12 @@ namespace gonio::sl { struct ParseState; }
 }
 
 %code {
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <memory>
+#include <type_traits>
+
 #include "shaderlang/compiler/parse_state.h"
 
 #define YYLLOC_DEFAULT(Current, Rhs, N)            \
@@ -39,6 +45,42 @@ using gonio::sl::NodeKind;
 void slerror(SLLTYPE* location, void*, gonio::sl::ParseState* state, const char* message) {
     state->Error(*location, message);
 }
+
+// Bison's C parser grows its stacks in C++ only through a user's yyoverflow: without one it
+// stops at 200 entries ("memory exhausted": an if / else if chain of 33 did). Its states,
+// values and locations are plain data, so each stack grows by copying into a buffer the parse
+// state keeps until the parse ends.
+static_assert(std::is_trivially_copyable_v<SLSTYPE> && std::is_trivially_copyable_v<SLLTYPE>);
+constexpr std::ptrdiff_t kMaxParserDepth = 100000;
+
+template <class T>
+T* GrownStack(gonio::sl::ParseState* state, const T* stack, std::size_t bytes, std::ptrdiff_t size) {
+    auto& buffer = state->parserStacks.emplace_back(new char[std::size_t(size) * sizeof(T)]);
+    std::memcpy(buffer.get(), stack, bytes);
+    return reinterpret_cast<T*>(buffer.get());
+}
+
+template <class S, class V, class L>
+void GrowParserStacks(gonio::sl::ParseState* state, S** states, std::size_t statesBytes, V** values,
+                      std::size_t valuesBytes, L** locations, std::size_t locationsBytes,
+                      std::ptrdiff_t* size) {
+    if (*size >= kMaxParserDepth) {
+        state->Error((*locations)[locationsBytes / sizeof(L) - 1],
+                     "the shader nests more deeply than " + std::to_string(kMaxParserDepth) +
+                         " levels of the grammar");
+        return;  // the stacks stay full: the parser stops
+    }
+    const std::ptrdiff_t grown = std::min(2 * *size, kMaxParserDepth);
+    *states = GrownStack(state, *states, statesBytes, grown);
+    *values = GrownStack(state, *values, valuesBytes, grown);
+    *locations = GrownStack(state, *locations, locationsBytes, grown);
+    *size = grown;
+}
+
+#define yyoverflow(message, states, statesBytes, values, valuesBytes, locations, locationsBytes, \
+                   size)                                                                       \
+    GrowParserStacks(state, states, statesBytes, values, valuesBytes, locations, locationsBytes, \
+                     size)
 
 Node* Make(gonio::sl::ParseState* state, NodeKind kind, const gonio::sl::SourceLoc& loc,
            std::initializer_list<Node*> kids = {}) {

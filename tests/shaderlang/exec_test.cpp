@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "sl_test_util.h"
 
 namespace gonio::sl {
@@ -125,6 +128,22 @@ TEST(ShadeExec, ReturnValueCallsOtherFunctions) {
         const float u = (float(i) + 0.5f) / 4;
         EXPECT_FLOAT_EQ(r.At(0, i), (u + 1) * 2) << i;
         EXPECT_FLOAT_EQ(r.At(1, i), (u + 2) * 2 + (u + 1) * 2 + (u + 3)) << i;
+    }
+}
+
+// An if / else if chain of 100: the parser's stacks grow past their first 200 entries (a chain
+// of 33 once ran out of them), and each point takes its own branch.
+TEST(ShadeExec, LongElseIfChains) {
+    std::string source = "surface t() { float y = -1;\nif (u < 0.01) y = 0;\n";
+    for (int i = 1; i < 100; ++i)
+        source +=
+            "else if (u < " + std::to_string(0.01 * (i + 1)) + ") y = " + std::to_string(i) + ";\n";
+    source += "else y = 100;\nCi = y; }\n";
+    auto r = Shade(source, 4, 1, "Ci");
+    ASSERT_EQ(r.width, 3) << r.diagnostics;
+    for (int i = 0; i < 4; ++i) {
+        const float u = (float(i) + 0.5f) / 4;  // 0.125, 0.375, ...: branch floor(100 u)
+        EXPECT_FLOAT_EQ(r.At(0, i), std::floor(100 * u)) << i;
     }
 }
 
