@@ -24,6 +24,19 @@ std::vector<std::string> ExpandSearchPath(const std::string& text,
     return folders;
 }
 
+std::string SubstitutePreviousPath(const std::string& text, const std::string& previous) {
+    std::string result;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(':', start), text.size());
+        const std::string entry = text.substr(start, end - start);
+        if (!result.empty() || start > 0) result += ':';
+        result += entry == "&" ? previous : entry;
+        start = end + 1;
+    }
+    return result;
+}
+
 std::string FindOnSearchPath(const std::string& name, const std::vector<std::string>& folders) {
     if (name.empty()) return {};
     std::error_code error;

@@ -14,6 +14,10 @@ std::vector<std::string> ExpandSearchPath(const std::string& text,
                                           const std::vector<std::string>& previous,
                                           const std::vector<std::string>& standard);
 
+// The text of a new search path whose '&' entries stand for `previous`, the text in effect
+// before it ("@" when none was set), so that a later path can in turn refer to this one.
+std::string SubstitutePreviousPath(const std::string& text, const std::string& previous);
+
 // Where `name` is: itself when absolute, else the first `folder/name` that exists; empty when
 // there is none.
 std::string FindOnSearchPath(const std::string& name, const std::vector<std::string>& folders);

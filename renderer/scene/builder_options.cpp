@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "base/limits.h"
+#include "base/search_path.h"
 #include "renderer/scene/scene_builder_state.h"
 #include "renderer/scene/standard_options.h"
 
@@ -251,7 +252,12 @@ void SceneBuilder::Option(const std::string& name, const ParamList& params, cons
     ParamDict& merged = state_->options.user[name];
     for (const Param& p : params) {
         TypedParam typed;
-        if (TypeOptionParam("Option", name, p, &typed)) merged.Set(std::move(typed), p.loc);
+        if (!TypeOptionParam("Option", name, p, &typed)) continue;
+        // '&' is the path before this request (RISpec §4.1.4), which the next one replaces.
+        if (name == "searchpath" && typed.strings.size() == 1)
+            typed.strings[0] = SubstitutePreviousPath(
+                typed.strings[0], merged.GetString(typed.decl.name, "@"));
+        merged.Set(std::move(typed), p.loc);
     }
     // The RIB front end follows the archive path itself (rib_session.cpp), before any target.
     if (name == "searchpath") merged.MarkRead("archive");

@@ -52,10 +52,12 @@ def close(a, b, tolerance=1e-5):
 def check_background_is_exact(ws):
     background = " ".join(str(c) for c in BACKGROUND)
     imager = f'Imager "background" "background" [{background}]\n'
+    aqsis = f'Imager "background" "color bgcolor" [{background}]\n'  # Aqsis's spelling
     ws.render(frame(1, "plain.tif") + frame(2, "imager.tif", imager) +
-              frame(3, "exposed.tif", imager + "Exposure 2 1\n"))
-    plain, imaged, exposed = read_images(*(ws.path(f) for f in
-                                           ("plain.tif", "imager.tif", "exposed.tif")))
+              frame(3, "exposed.tif", imager + "Exposure 2 1\n") + frame(4, "bgcolor.tif", aqsis))
+    plain, imaged, exposed, bgcolor = read_images(
+        *(ws.path(f) for f in ("plain.tif", "imager.tif", "exposed.tif", "bgcolor.tif")))
+    expect(bgcolor.pixels == imaged.pixels, "\"bgcolor\" should fill as \"background\" does")
     outside = inside = edge = 0
     for (px, py), was in plain.pixels.items():
         got, doubled = imaged.pixels[(px, py)], exposed.pixels[(px, py)]

@@ -21,6 +21,17 @@ TEST(SearchPath, AmpersandIsThePreviousPathAndAtTheDefault) {
     EXPECT_EQ(ExpandSearchPath("@", {"p"}, {}), Folders{});
 }
 
+// Each Option "searchpath" replaces its '&' by the path before it, so a chain of them keeps
+// every earlier folder ('&' once meant the default path whatever came before).
+TEST(SearchPath, AmpersandChainsThroughSuccessiveRequests) {
+    const std::string first = SubstitutePreviousPath("a:&", "@");
+    EXPECT_EQ(first, "a:@");
+    const std::string second = SubstitutePreviousPath("b:&:c", first);
+    EXPECT_EQ(second, "b:a:@:c");
+    EXPECT_EQ(ExpandSearchPath(second, {}, {"d"}), (Folders{"b", "a", "d", "c"}));
+    EXPECT_EQ(SubstitutePreviousPath("x::y", "p"), "x::y");
+}
+
 class FindOnSearchPathTest : public ::testing::Test {
   protected:
     void SetUp() override {

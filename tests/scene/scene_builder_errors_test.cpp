@@ -376,6 +376,15 @@ TEST(SceneBuilderFrames, SkewTurnsTheFirstVectorTowardsTheSecond) {
     EXPECT_NEAR(x2.y, 0, 1e-6);
 }
 
+TEST(SceneBuilderFrames, SearchPathAmpersandIsThePreviousPath) {
+    const BuildResult r = Build(
+        "Option \"searchpath\" \"shader\" \"one:&\"\nOption \"searchpath\" \"shader\" "
+        "\"two:&\"\nWorldBegin\nWorldEnd\n");
+    EXPECT_EQ(r.messages, "");
+    ASSERT_EQ(r.frames.size(), 1u);
+    EXPECT_EQ(r.frames[0].options.user.at("searchpath").GetString("shader", ""), "two:one:@");
+}
+
 TEST(SceneBuilderFrames, MovingQuadricsUseTheirFirstSample) {
     const BuildResult r = Build(
         "WorldBegin\nMotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd\n"
