@@ -255,8 +255,8 @@ void SceneBuilder::Option(const std::string& name, const ParamList& params, cons
         if (!TypeOptionParam("Option", name, p, &typed)) continue;
         // '&' is the path before this request (RISpec §4.1.4), which the next one replaces.
         if (name == "searchpath" && typed.strings.size() == 1)
-            typed.strings[0] = SubstitutePreviousPath(
-                typed.strings[0], merged.GetString(typed.decl.name, "@"));
+            typed.strings[0] =
+                SubstitutePreviousPath(typed.strings[0], merged.GetString(typed.decl.name, "@"));
         merged.Set(std::move(typed), p.loc);
     }
     // The RIB front end follows the archive path itself (rib_session.cpp), before any target.
