@@ -83,10 +83,10 @@ std::shared_ptr<const Shader> CompileShaderSource(const std::string& source,
 std::shared_ptr<const Shader> CompileShaderFile(const std::string& path,
                                                 const CompileOptions& options,
                                                 Diagnostics& diagnostics) {
-    std::string source;
-    if (!ReadTextFile(path, &source)) {
+    std::string source, why;
+    if (!ReadTextFile(path, &source, &why)) {
         diagnostics.Error(FileLoc{std::make_shared<const std::string>(path), 0, 0},
-                          "cannot read the shader file");
+                          "cannot read the shader file: " + why);
         return nullptr;
     }
     return CompileShaderSource(source, path, options, diagnostics);

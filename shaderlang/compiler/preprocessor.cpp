@@ -3,6 +3,7 @@
 #include <cctype>
 #include <climits>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -77,6 +78,9 @@ class Preprocessor {
     }
     void Directive(const std::string& line, int lineNumber, int depth, const std::string& dir);
     std::string Expand(const std::string& text, std::set<std::string>& disabled, int line);
+    // Expand over a whole line, with no macro disabled; an expansion past kMaxExpandedLine (a
+    // macro that doubles itself 30 times would take gigabytes) is an error and gives "".
+    std::string ExpandLine(const std::string& text, int line);
     long EvaluateCondition(const std::string& text, int line);
     bool Active() const { return conditionals_.empty() || conditionals_.back().active; }
     void Marker(int line) { out_ << "#line " << line << " \"" << *file_ << "\"\n"; }
@@ -88,7 +92,10 @@ class Preprocessor {
     std::shared_ptr<const std::string> file_;
     std::ostringstream out_;
     int errors_ = 0;
+    bool expansionTooLarge_ = false;  // set by Expand past kMaxExpandedLine
 };
+
+constexpr size_t kMaxExpandedLine = size_t(1) << 20;
 
 std::string Trim(const std::string& s) {
     size_t b = s.find_first_not_of(" \t\r");
@@ -125,8 +132,7 @@ void Preprocessor::ProcessFile(const std::string& text, const std::string& fileN
         if (!trimmed.empty() && trimmed[0] == '#') {
             Directive(trimmed.substr(1), first, depth, Directory(fileName));
         } else if (Active()) {
-            std::set<std::string> disabled;
-            out_ << Expand(line, disabled, first) << '\n';
+            out_ << ExpandLine(line, first) << '\n';
         } else {
             out_ << '\n';
         }
@@ -231,15 +237,17 @@ void Preprocessor::Directive(const std::string& text, int line, int depth, const
             std::vector<std::string> dirs;
             if (close == '"') dirs.push_back(dir);
             dirs.insert(dirs.end(), options_.includeDirs.begin(), options_.includeDirs.end());
-            std::string text, found;
+            std::string text, found, why;
             for (const std::string& d : dirs) {
                 std::string candidate = target[0] == '/' ? target : d + "/" + target;
-                if (ReadTextFile(candidate, &text)) {
-                    found = candidate;
-                    break;
-                }
+                std::error_code error;
+                if (!std::filesystem::exists(candidate, error)) continue;
+                if (ReadTextFile(candidate, &text, &why)) found = candidate;
+                break;
             }
-            if (found.empty()) {
+            if (!why.empty()) {
+                Error(line, 1, "cannot include '" + target + "': " + why);
+            } else if (found.empty()) {
                 Error(line, 1, "cannot find include file '" + target + "'");
             } else {
                 ProcessFile(text, found, depth + 1);
@@ -263,11 +271,24 @@ void Preprocessor::Directive(const std::string& text, int line, int depth, const
 
 // Expands macros in `text`. `disabled` holds the macros being expanded, which are not expanded
 // again inside themselves (C's rule, which also stops runaway recursion).
+std::string Preprocessor::ExpandLine(const std::string& text, int line) {
+    std::set<std::string> disabled;
+    std::string expanded = Expand(text, disabled, line);
+    if (!expansionTooLarge_) return expanded;
+    expansionTooLarge_ = false;
+    Error(line, 1,
+          "the macros of this line expand to more than " + std::to_string(kMaxExpandedLine >> 20) +
+              " MiB (a macro that doubles?)");
+    return "";
+}
+
 std::string Preprocessor::Expand(const std::string& text, std::set<std::string>& disabled,
                                  int line) {
     std::string out;
     size_t i = 0;
     while (i < text.size()) {
+        if (out.size() > kMaxExpandedLine) expansionTooLarge_ = true;
+        if (expansionTooLarge_) return out;
         char c = text[i];
         if (c == '"') {
             size_t start = i;
@@ -516,8 +537,7 @@ long Preprocessor::EvaluateCondition(const std::string& text, int line) {
             resolved += text[i++];
         }
     }
-    std::set<std::string> disabled;
-    std::string expanded = Expand(resolved, disabled, line);
+    const std::string expanded = ExpandLine(resolved, line);
     std::string numeric;
     for (size_t i = 0; i < expanded.size();) {
         if (IsIdentStart(expanded[i])) {
@@ -535,12 +555,20 @@ long Preprocessor::EvaluateCondition(const std::string& text, int line) {
 
 }  // namespace
 
-bool ReadTextFile(const std::string& path, std::string* text) {
+bool ReadTextFile(const std::string& path, std::string* text, std::string* why) {
+    auto fail = [&](const std::string& reason) {
+        if (why) *why = reason;
+        return false;
+    };
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return fail("not a regular file");
+    if (std::filesystem::file_size(path, error) > kMaxSourceBytes)
+        return fail("larger than " + std::to_string(kMaxSourceBytes >> 20) + " MiB");
     std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
+    if (!in) return fail("cannot be read");
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    if (in.bad()) return false;
+    if (in.bad()) return fail("cannot be read");
     *text = buffer.str();
     return true;
 }

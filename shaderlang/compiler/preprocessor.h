@@ -6,6 +6,7 @@
 // every error at its original file and line. Not supported: the # and ## operators, and macro
 // calls whose arguments span lines.
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,7 +25,11 @@ struct PreprocessOptions {
 bool Preprocess(const std::string& source, const std::string& fileName,
                 const PreprocessOptions& options, std::string* output, Diagnostics& diagnostics);
 
-// Reads a whole file; false if it cannot be read.
-bool ReadTextFile(const std::string& path, std::string* text);
+// Shader sources and their includes are at most this large (a larger one is not a shader).
+constexpr std::uintmax_t kMaxSourceBytes = 64u << 20;
+
+// Reads a whole regular file of at most kMaxSourceBytes; false, with the reason in *why when
+// given, if it is missing, not a regular file (/dev/zero, a folder), too large or unreadable.
+bool ReadTextFile(const std::string& path, std::string* text, std::string* why = nullptr);
 
 }  // namespace gonio::sl

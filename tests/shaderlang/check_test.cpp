@@ -15,6 +15,23 @@ TEST(ShadeCheck, SyntaxErrorsAreAllReportedWithLocations) {
     EXPECT_NE(e.find("test.sl:3:11: error: syntax error"), std::string::npos) << e;
 }
 
+// Inputs that would hang or exhaust memory are located errors: an include of a device, and a
+// macro that doubles itself 30 times (2^30 copies).
+TEST(ShadeCheck, RunawayPreprocessingIsAnError) {
+    std::string e = Errors("#include \"/dev/zero\"\nsurface t() {}\n");
+    EXPECT_NE(e.find("test.sl:1:1: error: cannot include '/dev/zero': not a regular file"),
+              std::string::npos)
+        << e;
+    std::string doubling = "#define A0 x\n";
+    for (int i = 0; i < 30; ++i)
+        doubling += "#define A" + std::to_string(i + 1) + " A" + std::to_string(i) + " A" +
+                    std::to_string(i) + "\n";
+    e = Errors(doubling + "surface t() { float x = 1; float y = A30; }\n");
+    EXPECT_NE(e.find("test.sl:32:1: error: the macros of this line expand to more than 1 MiB"),
+              std::string::npos)
+        << e;
+}
+
 TEST(ShadeCheck, TypeErrorsAreAllReported) {
     std::string e = Errors(
         "surface t() {\n"

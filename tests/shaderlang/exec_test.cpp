@@ -147,6 +147,15 @@ TEST(ShadeExec, LongElseIfChains) {
     }
 }
 
+// C's float suffix, as Pixie's and Aqsis's compilers take it: 0.5f is 0.5, 1e-1F is 0.1.
+TEST(ShadeExec, FloatSuffixes) {
+    auto r = Shade("surface t() { Ci = color(0.5f, 1e-1F, 2.f); }", 1, 1, "Ci");
+    ASSERT_EQ(r.width, 3) << r.diagnostics;
+    EXPECT_FLOAT_EQ(r.At(0, 0), 0.5f);
+    EXPECT_FLOAT_EQ(r.At(1, 0), 0.1f);
+    EXPECT_FLOAT_EQ(r.At(2, 0), 2.0f);
+}
+
 TEST(ShadeExec, ExternReachesTheEnclosingShader) {
     auto r = Shade(R"(surface t() {
         float k = 2;
