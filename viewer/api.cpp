@@ -61,6 +61,8 @@ void RegisterApi(httplib::Server& server, const ReflectanceImage& image) {
     server.set_payload_max_length(kMaxRequestBytes);
     server.Get("/api/image", Guarded([api](const auto&) { return api->Metadata(); }));
     server.Get("/api/image/spectra", Guarded([api](const auto&) { return api->Spectra(); }));
+    server.Get("/api/image/coefficients",
+               Guarded([api](const auto&) { return api->Coefficients(); }));
     server.Get("/api/illuminants", Guarded([api](const auto&) { return api->Illuminants(); }));
     server.Get(R"(/api/illuminants/([^/]+))",
                Guarded([api](const httplib::Request& r) { return api->Illuminant(r.matches[1]); }));

@@ -3,6 +3,7 @@
 //
 //   GET  /api/image              metadata: size, wavelengths, the RGB conversion matrices
 //   GET  /api/image/spectra      the samples, little-endian float32, pixel-major, top row first
+//   GET  /api/image/coefficients an image in a basis: its k coefficients per pixel, likewise
 //   GET  /api/illuminants        the preset names; /api/illuminants/NAME one preset
 //   POST /api/relight            {light, conversion} → linear RGB, little-endian float32
 //   POST /api/export             {light, conversion, format: png|exr} → the image file

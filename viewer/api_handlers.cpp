@@ -39,6 +39,17 @@ Eigen::Vector3d MatchTarget(const nlohmann::json& request, const Eigen::VectorXd
         brightness == "largest" ? spectral::Brightness::Largest : spectral::Brightness::Euclidean);
 }
 
+// The vectors of an image's basis, k lists of n samples; null for an image of samples.
+nlohmann::json BasisVectors(const Eigen::MatrixXd& basis) {
+    if (basis.cols() == 0) return nullptr;
+    nlohmann::json vectors = nlohmann::json::array();
+    for (int k = 0; k < basis.cols(); ++k) {
+        const Eigen::VectorXd column = basis.col(k);
+        vectors.push_back(std::vector<double>(column.data(), column.data() + column.size()));
+    }
+    return vectors;
+}
+
 std::vector<std::vector<double>> Rows(const Eigen::Matrix3Xd& m) {
     std::vector<std::vector<double>> rows(3);
     for (int c = 0; c < 3; ++c)
@@ -98,10 +109,17 @@ Reply ApiHandlers::Metadata() const {
                       {"height", image_.height},
                       {"wavelengths", image_.wavelengths},
                       {"toRgb", {{"box", Rows(box_)}, {"cie", Rows(cie_)}}},
-                      {"hasPreview", !image_.previewRgb.empty()}});
+                      {"hasPreview", !image_.previewRgb.empty()},
+                      {"basis", BasisVectors(image_.basis)}});
 }
 
 Reply ApiHandlers::Spectra() const { return BinaryReply(image_.spectra); }
+
+Reply ApiHandlers::Coefficients() const {
+    if (image_.coefficients.empty())
+        throw ViewerError(image_.path + " holds samples, not coefficients in a basis");
+    return BinaryReply(image_.coefficients);
+}
 
 Reply ApiHandlers::Illuminants() const { return JsonReply({{"names", IlluminantNames()}}); }
 

@@ -24,6 +24,8 @@ class ApiHandlers {
 
     Reply Metadata() const;
     Reply Spectra() const;
+    // An image in a basis: its k coefficients per pixel (a 400 for an image of samples).
+    Reply Coefficients() const;
     Reply Illuminants() const;
     Reply Illuminant(const std::string& name) const;
     Reply Relit(const nlohmann::json& request) const;

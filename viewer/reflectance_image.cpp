@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "imageio/oiio_plugin.h"
+#include "spectral/image_basis_layout.h"
+#include "spectral/spectral_error.h"
 
 namespace gonio::viewer {
 
@@ -76,6 +78,73 @@ std::vector<int> PreviewChannels(const ImageFileSpec& spec) {
     return indices;
 }
 
+// The channels basis.00 … basis.(k−1) by index; empty when the file has none.
+std::vector<int> FindBasisChannels(const std::string& path, const ImageFileSpec& spec) {
+    std::vector<std::pair<int, int>> found;  // (basis index, channel)
+    for (int c = 0; c < spec.Channels(); ++c) {
+        int index = 0;
+        if (spectral::ParseBasisChannelName(spec.channelNames[size_t(c)], &index))
+            found.push_back({index, c});
+    }
+    std::sort(found.begin(), found.end());
+    std::vector<int> channels;
+    for (size_t i = 0; i < found.size(); ++i) {
+        if (found[i].first != int(i))
+            Fail(path, "the basis channels are not basis.00 to basis." +
+                           std::to_string(found.size() - 1) + " (basis." +
+                           std::to_string(found[i].first) + " is out of place)");
+        channels.push_back(found[i].second);
+    }
+    return channels;
+}
+
+bool AllFinite(const std::vector<float>& values) {
+    return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+}
+
+// An image in a basis: its coefficients, the basis from the header, and the spectra it codes.
+void ReadBasisCoding(const ImageFileContents& contents, const std::vector<int>& channels,
+                     ReflectanceImage* image) {
+    spectral::StoredBasis stored;
+    try {
+        stored = spectral::ReadBasisHeader(contents.spec.attributes, int(channels.size()));
+    } catch (const spectral::SpectralError& e) {
+        Fail(image->path, std::string("a bad basis header: ") + e.what());
+    }
+    image->wavelengths = stored.wavelengths;
+    image->basis = stored.vectors;
+    image->coefficients = GatherChannels(contents.pixels, contents.spec.Channels(), channels);
+    if (!AllFinite(image->coefficients)) Fail(image->path, "a basis coefficient is not finite");
+    const int n = image->SampleCount(), k = int(channels.size());
+    const size_t pixels = image->coefficients.size() / size_t(k);
+    image->spectra.resize(pixels * size_t(n));
+    const Eigen::MatrixXf basis = stored.vectors.cast<float>();
+    for (size_t p = 0; p < pixels; ++p)
+        Eigen::Map<Eigen::VectorXf>(&image->spectra[p * size_t(n)], n) =
+            basis * Eigen::Map<const Eigen::VectorXf>(&image->coefficients[p * size_t(k)], k);
+}
+
+// An image of samples: the channels S0.<λ>nm in increasing wavelength.
+void ReadSampleChannels(const ImageFileContents& contents, ReflectanceImage* image) {
+    const std::string& path = image->path;
+    const std::vector<SpectralChannel> channels = FindSpectralChannels(contents.spec);
+    if (channels.size() < 3)
+        Fail(path,
+             "no spectral channels (S0.<wavelength>nm): render it with Option \"spectral\" "
+             "\"basis\" \"sampled\" and Display \"" +
+                 path + "\" \"openexr\" \"spectral\"");
+    for (size_t k = 1; k < channels.size(); ++k)
+        if (channels[k].nm == channels[k - 1].nm)
+            Fail(path, "two spectral channels at " + std::to_string(channels[k].nm) + " nm");
+    std::vector<int> indices;
+    for (const SpectralChannel& c : channels) {
+        image->wavelengths.push_back(c.nm);
+        indices.push_back(c.index);
+    }
+    image->spectra = GatherChannels(contents.pixels, contents.spec.Channels(), indices);
+    if (!AllFinite(image->spectra)) Fail(path, "a spectral sample is not a finite number");
+}
+
 }  // namespace
 
 bool ParseSpectralChannelName(const std::string& name, double* nm) {
@@ -96,30 +165,16 @@ ReflectanceImage ReadReflectanceImage(const std::string& path) {
              "\"spectral\"");
     const ImageFileContents contents = ReadAllChannels(path);
     const ImageFileSpec& spec = contents.spec;
-    const std::vector<SpectralChannel> channels = FindSpectralChannels(spec);
-    if (channels.size() < 3)
-        Fail(path,
-             "no spectral channels (S0.<wavelength>nm): render it with Option \"spectral\" "
-             "\"basis\" \"sampled\" and Display \"" +
-                 path + "\" \"openexr\" \"spectral\"");
-    for (size_t k = 1; k < channels.size(); ++k)
-        if (channels[k].nm == channels[k - 1].nm)
-            Fail(path, "two spectral channels at " + std::to_string(channels[k].nm) + " nm");
-
-    const std::vector<float>& pixels = contents.pixels;
     ReflectanceImage image;
     image.path = path;
     image.width = spec.width;
     image.height = spec.height;
-    std::vector<int> indices;
-    for (const SpectralChannel& c : channels) {
-        image.wavelengths.push_back(c.nm);
-        indices.push_back(c.index);
-    }
-    image.spectra = GatherChannels(pixels, spec.Channels(), indices);
-    if (!std::all_of(image.spectra.begin(), image.spectra.end(),
-                     [](float v) { return std::isfinite(v); }))
-        Fail(path, "a spectral sample is not a finite number");
+    const std::vector<int> basisChannels = FindBasisChannels(path, spec);
+    if (basisChannels.empty())
+        ReadSampleChannels(contents, &image);
+    else
+        ReadBasisCoding(contents, basisChannels, &image);
+    const std::vector<float>& pixels = contents.pixels;
     const std::vector<int> preview = PreviewChannels(spec);
     if (!preview.empty()) image.previewRgb = GatherChannels(pixels, spec.Channels(), preview);
     return image;

@@ -54,13 +54,19 @@ std::vector<float> Relight(const ReflectanceImage& image, const Eigen::VectorXd&
     if (light.size() != n || toRgb.cols() != n)
         throw ViewerError("the light has " + std::to_string(light.size()) +
                           " values; the image has " + std::to_string(n) + " wavelengths");
-    const Eigen::Matrix3Xd c = toRgb * light.asDiagonal();  // thesis §6.2.4: C = M X L Bᵀ
+    // Thesis §6.2.4: C = M X diag(l) Bᵀ, once per light: 3 × n for samples (B the identity),
+    // 3 × k in a basis (the file's B is n × k), so each pixel costs one 3 × k product.
+    const bool inBasis = image.basis.cols() > 0;
+    const Eigen::Matrix3Xd c = inBasis ? Eigen::Matrix3Xd(toRgb * light.asDiagonal() * image.basis)
+                                       : Eigen::Matrix3Xd(toRgb * light.asDiagonal());
+    const std::vector<float>& components = inBasis ? image.coefficients : image.spectra;
+    const int k = int(c.cols());
     const size_t pixels = size_t(image.width) * image.height;
     std::vector<float> rgb(3 * pixels);
     for (size_t p = 0; p < pixels; ++p) {
-        const Eigen::Map<const Eigen::VectorXf> r(&image.spectra[p * n], n);
+        const Eigen::Map<const Eigen::VectorXf> r(&components[p * k], k);
         const Eigen::Vector3d out = c * r.cast<double>();
-        for (int k = 0; k < 3; ++k) rgb[3 * p + k] = float(out[k]);
+        for (int j = 0; j < 3; ++j) rgb[3 * p + j] = float(out[j]);
     }
     return rgb;
 }

@@ -2,7 +2,8 @@
 // Applying a light to a reflectance image (thesis §6.2.3-6.2.4): pixel_rgb = M diag(l) r, where
 // r is the pixel's spectral transfer, l the light at the image's wavelengths and M the 3×n matrix
 // of the "RGB conversion" (Appendix D.1.1). The matrix C = M diag(l) is formed once per light and
-// each pixel costs one 3×n product (§6.2.4).
+// each pixel costs one 3×n product (§6.2.4); for an image in a basis B (n × k) the matrix is
+// C = M diag(l) B and each pixel's k coefficients cost one 3×k product.
 
 #include <Eigen/Dense>
 #include <string>

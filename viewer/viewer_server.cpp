@@ -1,12 +1,15 @@
 #include "viewer/viewer_server.h"
 
+// Eigen (through the reflectance image) before httplib: httplib brings <resolv.h>, whose macro
+// `_res` breaks Eigen's headers.
+#include "viewer/api.h"
+#include "viewer/reflectance_image.h"
+// clang-format off
 #include <httplib.h>
+// clang-format on
 #include <signal.h>
 
 #include <thread>
-
-#include "viewer/api.h"
-#include "viewer/reflectance_image.h"
 
 namespace gonio::viewer {
 

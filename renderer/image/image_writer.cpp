@@ -6,11 +6,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
 
 #include "imageio/image_formats.h"
+#include "renderer/image/basis_display.h"
 
 namespace gonio {
 
@@ -285,11 +287,14 @@ std::string SpectralChannelName(double nm) {
     return name;
 }
 
+// A "spectral" display's channels before its spectrum: R, G, B and A.
+constexpr int kSpectralPreviewChannels = 4;
+
 // Names the spectral channels of a "spectral" display (after the RGB preview and alpha) by
 // their wavelengths; false when the frame is not spectral or the file cannot hold them.
 bool NameSpectralChannels(const DisplaySpec& display, const std::string& format,
                           std::vector<OutputChannel>& channels, std::string* error) {
-    const size_t preview = 4;
+    const size_t preview = kSpectralPreviewChannels;
     if (format != "openexr") {
         *error = "Display mode \"spectral\" needs an OpenEXR file";
         return false;
@@ -301,6 +306,23 @@ bool NameSpectralChannels(const DisplaySpec& display, const std::string& format,
     for (size_t k = 0; k < display.wavelengths.size(); ++k)
         channels[preview + k].name = SpectralChannelName(display.wavelengths[k]);
     return true;
+}
+
+// "int basis" [k]: the n spectral channels of `data` become the k coefficients of the image's
+// own basis (basis_display.h), whose vectors go in the header.
+spectral::HeaderAttributes ReplaceSamplesByBasis(const DisplaySpec& display,
+                                                 std::vector<OutputChannel>& channels,
+                                                 PixelData& data) {
+    const float* floats = reinterpret_cast<const float*>(data.bytes.data());
+    const std::vector<float> values(floats, floats + data.bytes.size() / sizeof(float));
+    const BasisCodedPixels coded = EncodeInImageBasis(
+        values, kSpectralPreviewChannels, display.wavelengths, display.params.GetInt("basis", 0));
+    channels.resize(kSpectralPreviewChannels);
+    for (const std::string& name : coded.coefficientNames)
+        channels.push_back({-1, ChannelKind::Aov, name});  // no source: computed, not selected
+    data.bytes.resize(coded.values.size() * sizeof(float));
+    std::memcpy(data.bytes.data(), coded.values.data(), data.bytes.size());
+    return coded.attributes;
 }
 
 bool WriteDisplay(const DisplaySpec& display, const Image& image,
@@ -329,11 +351,21 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     display.params.MarkRead("origin");  // accepted: a window position only a framebuffer uses
     PixelData data =
         ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
+    spectral::HeaderAttributes basisAttributes;
+    if (display.mode == "spectral" && display.params.Has("basis")) {
+        try {
+            basisAttributes = ReplaceSamplesByBasis(display, channels, data);
+        } catch (const std::invalid_argument& e) {
+            return fail(e.what());
+        }
+    }
     ImageFileSpec spec =
         MakeFileSpec(image, channels, type.half ? PixelType::Half : data.type, display.params);
     if (display.mode == "spectral") {
         spec.attributes.emplace_back("spectralLayoutVersion", "1.0");
         spec.attributes.emplace_back("emissiveUnits", "W.m^-2.sr^-1");
+        spec.attributes.insert(spec.attributes.end(), basisAttributes.begin(),
+                               basisAttributes.end());
     }
     error = WriteImageFile(format, display.name, spec, PixelBuffer{data.type, data.bytes.data()});
     display.params.ReportUnused("Display \"" + display.name + "\"", diagnostics);

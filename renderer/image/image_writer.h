@@ -33,8 +33,9 @@ struct DisplaySpec {
     std::string type;  // "file", "tiff", "openexr", "png", "framebuffer", ...
     std::string mode;  // "rgb", "rgba", "rgbz", "rgbaz", "a", "z", "az", or an AOV name
     // Driver parameters, typed: "compression" (string, as OpenImageIO names them), "exrpixeltype"
-    // ("half" | "float"), "origin" (accepted; only a framebuffer would use it). Any other is
-    // reported as having had no effect.
+    // ("half" | "float"), "origin" (accepted; only a framebuffer would use it), "basis" (int k,
+    // mode "spectral": k coefficients of the image's own basis instead of the samples;
+    // basis_display.h). Any other is reported as having had no effect.
     ParamDict params;
     FileLoc loc;
     // The frame's wavelengths (Option "spectral"), which mode "spectral" writes as channels.

@@ -84,6 +84,10 @@ def test_metadata_and_spectra(url):
     # The centre of patch TCS01 (top row, first column): its reflectance, about 0.2-0.35.
     pixel = (32 * 448 + 32) * n
     check(0.1 < samples[pixel + 40] < 0.5, f"TCS01 at 580 nm is a reflectance: {samples[pixel + 40]}")
+    check(info["basis"] is None, "GET /api/image: an image of samples has no basis")
+    status, _, body = request(url, "api/image/coefficients")
+    check(status == 400 and "not coefficients in a basis" in body["error"],
+          "GET /api/image/coefficients of an image of samples: 400")
     return info
 
 

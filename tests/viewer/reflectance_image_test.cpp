@@ -74,5 +74,47 @@ TEST(ReadReflectanceImage, RejectsWhatIsNotOne) {
     ExpectRejected(truncated, "error");
 }
 
+// An image in a basis of two vectors whose header has the string attributes given.
+std::string WriteBasisExr(const std::string& name,
+                          const std::vector<std::pair<std::string, std::string>>& attributes) {
+    const std::string path = (fs::temp_directory_path() / name).string();
+    OIIO::ImageSpec spec(2, 2, 2, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"basis.00", "basis.01"};
+    for (const auto& [key, value] : attributes) spec.attribute(key, value);
+    std::vector<float> pixels(8, 0.5f);
+    auto out = OIIO::ImageOutput::create(path);
+    EXPECT_TRUE(out && out->open(path, spec) &&
+                out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    out->close();
+    return path;
+}
+
+TEST(ReadReflectanceImage, ReadsAnImageInABasis) {
+    const ReflectanceImage image = ReadReflectanceImage(
+        WriteBasisExr("gonio_viewer_basis.exr", {{"spectralBasisWavelengths", "400 500 600"},
+                                                 {"spectralBasisVector.00", "1 0 0"},
+                                                 {"spectralBasisVector.01", "0 0.5 2"}}));
+    EXPECT_EQ(image.wavelengths, (std::vector<double>{400, 500, 600}));
+    ASSERT_EQ(image.basis.cols(), 2);
+    EXPECT_EQ(image.coefficients, std::vector<float>(8, 0.5f));
+    EXPECT_EQ(image.spectra[0], 0.5f);  // basis · coefficients: 0.5, 0.25, 1
+    EXPECT_EQ(image.spectra[1], 0.25f);
+    EXPECT_EQ(image.spectra[2], 1.0f);
+}
+
+TEST(ReadReflectanceImage, RejectsABadBasisHeaderNamingTheFile) {
+    ExpectRejected(WriteBasisExr("gonio_viewer_nobasis.exr", {}),
+                   "a bad basis header: the header has no attribute \"spectralBasisWavelengths\"");
+    ExpectRejected(
+        WriteBasisExr("gonio_viewer_shortbasis.exr", {{"spectralBasisWavelengths", "400 500 600"},
+                                                      {"spectralBasisVector.00", "1 0 0"}}),
+        "\"spectralBasisVector.01\"");
+    ExpectRejected(
+        WriteBasisExr("gonio_viewer_textbasis.exr", {{"spectralBasisWavelengths", "400 500 600"},
+                                                     {"spectralBasisVector.00", "1 0 0"},
+                                                     {"spectralBasisVector.01", "0 one 0"}}),
+        "\"one\", not a finite number");
+}
+
 }  // namespace
 }  // namespace gonio::viewer

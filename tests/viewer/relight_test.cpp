@@ -1,6 +1,7 @@
 // Relighting exactness (thesis §6.2.1): ribs/tcs_e.rib rendered under the equal-energy light E
 // and relit with a light l must be the same scene rendered under l directly (same samples: the
-// pattern does not depend on colour), to float precision.
+// pattern does not depend on colour), to float precision. The same image written in a basis of
+// its own pixel spectra ("int basis" [k]) relights close to the full image: mean ΔE2000 ≤ 0.3.
 
 #include "viewer/relight.h"
 
@@ -10,9 +11,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
+#include "spectral/image_difference.h"
 #include "spectral/named_spectra.h"
 #include "tests/support/render_rib.h"
 #include "viewer/reflectance_image.h"
@@ -35,17 +38,40 @@ void Replace(std::string& text, const std::string& from, const std::string& to) 
     text.replace(at, from.size(), to);
 }
 
-// ribs/tcs_e.rib lit by `light` instead of E, written to a scratch EXR (its path returned).
-std::string RenderChart(const std::string& light) {
-    std::string rib = ReadFile(fs::path(GONIO_SOURCE_DIR) / "ribs" / "tcs_e.rib");
+fs::path ScratchFolder() {
     const fs::path dir = fs::temp_directory_path() / "gonio_viewer_relight";
     fs::create_directories(dir);
-    const std::string image = (dir / (light + ".exr")).string();
+    return dir;
+}
+
+// The sizes of the bases the E render is also written in, and the smallest that must meet the
+// acceptance of issue 16 (mean ΔE2000 ≤ 0.3 under F2, F11, A and D65).
+const std::vector<int> kBasisSizes = {3, 4, 5, 6, 8, 10, 14};
+constexpr int kChosenBasisSize = 8;
+
+std::string BasisImagePath(int k) {
+    return (ScratchFolder() / ("E_basis" + std::to_string(k) + ".exr")).string();
+}
+
+std::string BasisDisplays() {
+    std::string displays;
+    for (int k : kBasisSizes)
+        displays += "Display \"+" + BasisImagePath(k) +
+                    "\" \"openexr\" \"spectral\" \"int basis\" [" + std::to_string(k) + "]\n";
+    return displays;
+}
+
+// ribs/tcs_e.rib lit by `light` instead of E, written to a scratch EXR (its path returned) and
+// to the `displays` given.
+std::string RenderChart(const std::string& light, const std::string& displays = "",
+                        int expectedErrors = 0) {
+    std::string rib = ReadFile(fs::path(GONIO_SOURCE_DIR) / "ribs" / "tcs_e.rib");
+    const std::string image = (ScratchFolder() / (light + ".exr")).string();
     Replace(rib, "Display \"tcs_e.exr\"", "Display \"" + image + "\"");
-    Replace(rib, "Display \"+tcs_e.png\" \"png\" \"rgba\"\n", "");
+    Replace(rib, "Display \"+tcs_e.png\" \"png\" \"rgba\"\n", displays);
     Replace(rib, "\"lightcolor\" [\"E\"]", "\"lightcolor\" [\"" + light + "\"]");
     const test::RibRenderResult rendered = test::RenderRibString(rib, "tcs.rib");
-    EXPECT_EQ(rendered.errors, 0) << rendered.messages;
+    EXPECT_EQ(rendered.errors, expectedErrors) << rendered.messages;
     return image;
 }
 
@@ -75,7 +101,8 @@ double MaxRelativeDifference(const std::vector<float>& a, const std::vector<floa
 class Relighting : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
-        reflectance_ = new viewer::ReflectanceImage(viewer::ReadReflectanceImage(RenderChart("E")));
+        reflectance_ = new viewer::ReflectanceImage(
+            viewer::ReadReflectanceImage(RenderChart("E", BasisDisplays())));
     }
     static void TearDownTestSuite() { delete reflectance_; }
     static const viewer::ReflectanceImage* reflectance_;
@@ -116,6 +143,54 @@ TEST_F(Relighting, AnotherLightChangesTheImage) {
         viewer::ConversionMatrix(viewer::RgbConversion::Cie, r.wavelengths);
     const std::vector<float> relit = viewer::Relight(r, RelativeLight("F11", r.wavelengths), cie);
     EXPECT_GT(MaxRelativeDifference(relit, r.previewRgb), 0.05);  // the check above can fail
+}
+
+std::vector<spectral::Rgb> RgbPixels(const std::vector<float>& rgb) {
+    std::vector<spectral::Rgb> pixels;
+    for (size_t p = 0; p < rgb.size(); p += 3) pixels.emplace_back(rgb[p], rgb[p + 1], rgb[p + 2]);
+    return pixels;
+}
+
+// Mean ΔE2000 of `image` relit with `light` against the full image of samples relit with it, in
+// CIELAB relative to the light's white at the brightest pixel (spectral/image_difference.h).
+double MeanDeltaE(const viewer::ReflectanceImage& full, const viewer::ReflectanceImage& image,
+                  const std::string& light) {
+    const Eigen::Matrix3Xd cie =
+        viewer::ConversionMatrix(viewer::RgbConversion::Cie, full.wavelengths);
+    const Eigen::VectorXd l = RelativeLight(light, full.wavelengths);
+    const std::vector<spectral::Rgb> reference = RgbPixels(viewer::Relight(full, l, cie));
+    const Eigen::Vector3d lightRgb = cie * l;
+    const spectral::Xyz white = spectral::BrightestPixelWhite(
+        reference, spectral::Rgb(lightRgb[0], lightRgb[1], lightRgb[2]));
+    return spectral::CompareImages(reference, RgbPixels(viewer::Relight(image, l, cie)), white)
+        .mean;
+}
+
+TEST_F(Relighting, TheImageInItsOwnBasisRelightsLikeTheFullImage) {
+    const viewer::ReflectanceImage& r = *reflectance_;
+    for (int k : kBasisSizes) {
+        const viewer::ReflectanceImage coded = viewer::ReadReflectanceImage(BasisImagePath(k));
+        ASSERT_EQ(coded.basis.cols(), k);
+        ASSERT_EQ(coded.wavelengths, r.wavelengths);
+        EXPECT_EQ(coded.previewRgb, r.previewRgb) << k;  // the preview is written unchanged
+        std::string line = "basis " + std::to_string(k) + ": mean ΔE2000";
+        for (const std::string light : {"F2", "F11", "A", "D65"}) {
+            const double de = MeanDeltaE(r, coded, light);
+            RecordProperty("meanDeltaE2000Basis" + std::to_string(k) + light, std::to_string(de));
+            line += " " + light + " " + std::to_string(de);
+            if (k >= kChosenBasisSize) EXPECT_LE(de, 0.3) << "k = " << k << ", " << light;
+        }
+        std::cout << line << "\n";
+    }
+    // Fewer vectors are not enough: the check above can fail.
+    const viewer::ReflectanceImage six = viewer::ReadReflectanceImage(BasisImagePath(6));
+    EXPECT_GT(MeanDeltaE(r, six, "F11"), 0.3);
+}
+
+TEST(BasisDisplay, ABasisOfMoreVectorsThanWavelengthsIsAnError) {
+    const std::string path = (ScratchFolder() / "E_basis82.exr").string();
+    RenderChart("E", "Display \"+" + path + "\" \"openexr\" \"spectral\" \"int basis\" [82]\n", 1);
+    EXPECT_FALSE(fs::exists(path));
 }
 
 TEST(RgbConversion, BoxAveragesThirdsOfTheSamples) {

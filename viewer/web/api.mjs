@@ -24,6 +24,12 @@ export async function spectra() {
     return new Float32Array(await response.arrayBuffer());  // little-endian, as the page's hosts are
 }
 
+// An image in a basis: its k coefficients per pixel.
+export async function coefficients() {
+    const response = await checked(await fetch('/api/image/coefficients'));
+    return new Float32Array(await response.arrayBuffer());
+}
+
 export async function relit(light, conversion) {
     const response = await post('/api/relight', { light, conversion });
     return new Float32Array(await response.arrayBuffer());

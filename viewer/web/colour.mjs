@@ -24,6 +24,20 @@ export function cssColour(linearRgb) {
 }
 
 // The 3×n matrix C = M diag(l) of thesis §6.2.4, flattened row by row.
+// C B (3×k, flat like C): the light's matrix C (3×n, flat) applied to an image's basis, k vectors
+// of n samples, so that a pixel's k coefficients relight with k products per channel.
+export function basisLightMatrix(c, basis) {
+    const n = c.length / 3, k = basis.length;
+    const cb = new Float64Array(3 * k);
+    for (let j = 0; j < 3; ++j)
+        for (let m = 0; m < k; ++m) {
+            let sum = 0;
+            for (let i = 0; i < n; ++i) sum += c[j * n + i] * basis[m][i];
+            cb[j * k + m] = sum;
+        }
+    return cb;
+}
+
 export function lightMatrix(matrix, light) {
     const n = light.length;
     const c = new Float64Array(3 * n);

@@ -1,9 +1,11 @@
 // The relit image on a canvas, with zoom (mouse wheel, about the pointer) and pan (drag). The
-// relighting is thesis §6.2.4's: one 3×n matrix C = M diag(l) per light, one product per pixel.
+// relighting is thesis §6.2.4's: one 3×n matrix C = M diag(l) per light (3×k, C B, for an image
+// in a basis), one product per pixel.
 
 import { encodeSrgb } from './colour.mjs';
 
-// Linear RGB (3 floats per pixel) of every pixel of `spectra` (n floats per pixel) under C.
+// Linear RGB (3 floats per pixel) of every pixel of `spectra` (n floats per pixel: samples, or
+// coefficients in a basis) under C (3×n).
 export function relight(spectra, n, c) {
     const pixels = spectra.length / n;
     const rgb = new Float32Array(3 * pixels);

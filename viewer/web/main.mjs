@@ -2,7 +2,7 @@
 // together. window.gonio exposes the parts to scripts and the browser test.
 
 import * as api from './api.mjs';
-import { cssColour, lightMatrix, normalisedToMax, rgbOf } from './colour.mjs';
+import { basisLightMatrix, cssColour, lightMatrix, normalisedToMax, rgbOf } from './colour.mjs';
 import { flatCurve, RANGE, SpdEditor } from './editor.mjs';
 import { ImageView, relight } from './image_view.mjs';
 import { describeMatch, matchEditorLight, showMetamers } from './matcher_ui.mjs';
@@ -44,14 +44,21 @@ function guarded(action) {
 
 async function start() {
     const info = await api.imageInfo();
-    const spectra = await api.spectra();
     const wavelengths = info.wavelengths;
     const n = wavelengths.length;
+    // An image in a basis (info.basis: k vectors of n samples) relights from its k coefficients
+    // per pixel with the 3×k matrix C B (thesis §6.2.4), an image of samples from its n samples.
+    const basis = info.basis;
+    const values = basis ? await api.coefficients() : await api.spectra();
+    const components = basis ? basis.length : n;
     $('file').textContent = `${info.file} (${info.width}×${info.height}, ${n} wavelengths)`;
 
     const conversion = () => $('conversion').value;
     const matrix = () => info.toRgb[conversion()];
-    const relit = (light) => relight(spectra, n, lightMatrix(matrix(), light));
+    const relit = (light) => {
+        const c = lightMatrix(matrix(), light);
+        return relight(values, components, basis ? basisLightMatrix(c, basis) : c);
+    };
     const imageView = new ImageView($('image'), info.width, info.height);
     const metamerViews = { a: new ImageView($('metamer-a'), info.width, info.height),
                            b: new ImageView($('metamer-b'), info.width, info.height),
