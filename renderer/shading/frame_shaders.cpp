@@ -1,5 +1,6 @@
 #include "renderer/shading/frame_shaders.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -146,11 +147,16 @@ void FrameShaders::AddShapeGroup(const SceneShape& shape, const Attributes& shad
     }
     if (!group.surface) return;
     // Primitive variables reach the surface shader's parameters of the same name (RSL §14.1).
+    // The instance is shared by every group with the same Surface request, so another group may
+    // have bound the parameter already: this group still needs it in its own list.
     auto bind = [&](const PrimVar& var) {
         const std::string& name = var.decl.name;
-        if (IsGlobalName(name) || group.surface->IsBound(name)) return;
+        const auto& bound = group.boundPrimvars;
+        if (IsGlobalName(name) || std::find(bound.begin(), bound.end(), name) != bound.end())
+            return;
         if (!group.surface->Master().FindParam(name)) return;
-        if (group.surface->BindPrimvar(name)) group.boundPrimvars.push_back(name);
+        if (group.surface->IsBound(name) || group.surface->BindPrimvar(name))
+            group.boundPrimvars.push_back(name);
     };
     std::visit(
         [&](const auto& geometry) {

@@ -67,6 +67,7 @@ SHADERS = {
     printf("type=%s\\n", kind);
 }""",
     "msgrandom.sl": 'surface msgrandom() { Ci = color random(); Oi = 1; }',
+    "primvarvalue.sl": 'surface primvarvalue(varying float myval = 0) { Ci = myval; Oi = 1; }',
 }
 
 
@@ -165,6 +166,23 @@ def check_random_is_deterministic(ws):
     expect(distinct > 0.9 * len(values), f"only {distinct} distinct pixels")
 
 
+def check_primvars_reach_every_primitive(ws):
+    """Two polygons, each in its own AttributeBegin under one Surface bound outside them, each
+    with its own value of a user primitive variable: both values reach the shader (the second
+    once shaded with the default)."""
+    polygons = "".join(
+        f'AttributeBegin\nPolygon "P" [{x0} -2 0  {x0 + 2} -2 0  {x0 + 2} 2 0  {x0} 2 0] '
+        f'"myval" [{v} {v} {v} {v}]\nAttributeEnd\n' for x0, v in ((-2, 0.25), (0, 0.75)))
+    ws.render(scene('Display "primvars.tif" "tiff" "rgba"\n',
+                    'Declare "myval" "varying float"\nSurface "primvarvalue"\n' + polygons))
+    (image,) = read_images(ws.path("primvars.tif"))
+    for (px, py), got in image.pixels.items():
+        if abs(px + 0.5 - SIZE / 2) < 1:
+            continue  # the seam
+        want = 0.25 if px < SIZE / 2 else 0.75
+        expect(abs(got[0] - want) < 1e-5, f"pixel {(px, py)}: {got[0]}, expected {want}")
+
+
 def check_too_large_an_image_is_an_error(ws):
     """A Format no machine can hold is refused at its line (exit 1), not aborted in the
     allocator (exit 134), and nothing is written."""
@@ -176,7 +194,8 @@ def check_too_large_an_image_is_an_error(ws):
 
 
 CHECKS = [check_messages_and_aovs, check_lightsource, check_textureinfo,
-          check_random_is_deterministic, check_too_large_an_image_is_an_error]
+          check_random_is_deterministic, check_primvars_reach_every_primitive,
+          check_too_large_an_image_is_an_error]
 
 
 def main():
