@@ -116,6 +116,12 @@ struct CurveSet {
     PrimVarSet vars;                          // everything but P and width
 };
 
+// RenderMan's default curve: a flat ribbon that turns to face each ray. Curves with N are
+// oriented by it instead (Embree has no oriented linear curve: those face the ray too).
+inline bool FacesTheRay(const CurveSet& curves) {
+    return !(curves.ribbon && !curves.normals.empty() && curves.basis != CurveSet::Basis::Linear);
+}
+
 // Points as discs facing the ray (RenderMan's default), or spheres.
 struct PointSet {
     std::vector<V3f> centers;

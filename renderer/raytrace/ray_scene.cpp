@@ -224,9 +224,10 @@ struct RayScene::Impl {
     RTCGeometry MakePoints(const PointSet& points, const M44f& m);
     ObjectHit EvaluateSubdivision(const GeometryRecord& record, const RayHit& hit,
                                   const V3f& objectP) const;
-    // worldP: the hit point, which spaceFromWorld takes to the record's space.
+    // worldP, worldDir: the hit point and the ray's direction, which spaceFromWorld takes to
+    // the record's space.
     ObjectHit EvaluateObject(const GeometryRecord& record, const RayHit& hit, const V3f& worldP,
-                             const M44f& spaceFromWorld) const;
+                             const V3f& worldDir, const M44f& spaceFromWorld) const;
     // The record of a hit's geometry, its attributes (an instance's for the shape, or the
     // shape's own) and the instance that placed it (null at the top level).
     struct ResolvedHit {
@@ -351,7 +352,7 @@ RTCGeometry RayScene::Impl::MakeCurves(const CurveSet& curves, const M44f& m) {
         RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BSPLINE_CURVE,
         RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_CATMULL_ROM_CURVE};
     const int basis = static_cast<int>(curves.basis);
-    const bool oriented = curves.ribbon && !curves.normals.empty() && basis != 0;
+    const bool oriented = !FacesTheRay(curves);
     RTCGeometry g = rtcNewGeometry(device, oriented ? kOriented[basis] : kRound[basis]);
     const float scale = LengthScale(m);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
@@ -595,7 +596,8 @@ bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar,
 }
 
 ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
-                                         const V3f& worldP, const M44f& spaceFromWorld) const {
+                                         const V3f& worldP, const V3f& worldDir,
+                                         const M44f& spaceFromWorld) const {
     // The hit point and normal in object space, for the kinds Embree gives them in world space.
     auto objectP = [&] {
         return TransformPoint(record.objectFromSpace, TransformPoint(spaceFromWorld, worldP));
@@ -610,7 +612,10 @@ ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const Ray
                 return EvaluateQuadricAt(quadric, hit.Ng, normals);  // Ng: the object-space P
             },
             [&](const CurveSet& curves) {
-                return EvaluateCurve(curves, hit.primID, hit.u, hit.v, objectP(), objectNg());
+                const V3f objectDir = TransformVector(record.objectFromSpace,
+                                                      TransformVector(spaceFromWorld, worldDir));
+                return EvaluateCurve(curves, hit.primID, hit.u, hit.v, objectP(), objectNg(),
+                                     objectDir);
             },
             [&](const PointSet&) { return EvaluatePoint(hit.primID, objectP(), objectNg()); },
             [&](const SubdivisionCage&) { return EvaluateSubdivision(record, hit, objectP()); },
@@ -738,7 +743,7 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     M44f worldFromSpace, spaceFromWorld;
     Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
     const V3f worldP = org + hit.t * dir;
-    const ObjectHit object = s.EvaluateObject(*record, hit, worldP, spaceFromWorld);
+    const ObjectHit object = s.EvaluateObject(*record, hit, worldP, dir, spaceFromWorld);
 
     // At the top level the record's space is the world (SpaceTransforms gives identities).
     M44f placedWorldFromObject, placedObjectFromWorld;

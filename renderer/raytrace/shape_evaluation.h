@@ -38,8 +38,12 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
 ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP,
                             const PrimVar* normals);
 // `objectP`: the hit point; curves and points have no (u,v) surface of their own to evaluate.
+// (u, v): Embree's, u along the segment. `objectDir`: the ray's direction, which a ribbon that
+// faces the ray (FacesTheRay) faces: its N points back along the ray, across the curve, and its
+// u runs from 0 to 1 across the width (Embree gives the tangent as Ng and no across parameter).
 ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float v,
-                        const Imath::V3f& objectP, const Imath::V3f& objectNg);
+                        const Imath::V3f& objectP, const Imath::V3f& objectNg,
+                        const Imath::V3f& objectDir);
 ObjectHit EvaluatePoint(unsigned primID, const Imath::V3f& objectP, const Imath::V3f& objectNg);
 
 // A mesh's variables as plain primitive variables, each rate expressed as the class that
