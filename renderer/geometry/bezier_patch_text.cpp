@@ -23,15 +23,20 @@ class LineReader {
             line->str(std::string(content));
             return true;
         }
+        ended_ = true;
         return false;
     }
 
-    std::string Where() const { return "line " + std::to_string(number_) + ": "; }
+    // Where the last line read was, for a message.
+    std::string Where() const {
+        return ended_ ? "at the end of the text: " : "line " + std::to_string(number_) + ": ";
+    }
 
   private:
     std::string_view text_;
     size_t position_ = 0;
     int number_ = 0;
+    bool ended_ = false;
 };
 
 // True when nothing but white space is left on the line.
