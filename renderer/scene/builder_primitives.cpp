@@ -11,6 +11,7 @@
 #include "renderer/geometry/primvar_eval.h"
 #include "renderer/geometry/quadrics.h"
 #include "renderer/geometry/subdivision.h"
+#include "renderer/geometry/teapot.h"
 #include "renderer/scene/scene_builder_state.h"
 
 namespace gonio {
@@ -204,9 +205,22 @@ void SceneBuilder::Curves(const std::string& type, const std::vector<int>& nvert
     AddGeometry("Curves", MakeCurves(type, nvertices, wrap, state_->attributes.vbasis, vars), loc);
 }
 
+// RISpec §5.7: the types of Geometry are implementation-specific; an unknown one is skipped
+// with a warning (not an error), as RiGeometry asks, naming the one gonio has.
 void SceneBuilder::Geometry(const std::string& type, const ParamList&, const FileLoc& loc) {
-    diagnostics_.WarningOnce("Geometry " + type, loc,
-                             "Geometry \"" + type + "\" is not supported: skipped");
+    if (type != "teapot") {
+        diagnostics_.WarningOnce(
+            "Geometry " + type, loc,
+            "Geometry \"" + type + "\" is not supported (gonio has only \"teapot\"): skipped");
+        return;
+    }
+    if (!StartPrimitive("Geometry", loc)) return;
+    auto patches = MakeTeapot();
+    if (!patches) {
+        diagnostics_.Error(loc, "Geometry \"teapot\": " + patches.Error());
+        return;
+    }
+    for (TriangleMesh& patch : patches.Value()) AddShape(std::move(patch), loc);
 }
 
 // ---- quadrics -------------------------------------------------------------------------------

@@ -325,6 +325,58 @@ def object_instance_inherits_current_attributes(b, me):
            f"instance after Color [1 0 0] has colour {centre[:3]}")
 
 
+TEAPOT_DATA = os.path.join(os.path.dirname(__file__), "..", "..", "data", "teapot.txt")
+
+
+def teapot_patches():
+    """The control points of data/teapot.txt's patches, read here without the renderer."""
+    lines = [l.split() for l in open(TEAPOT_DATA) if l.strip() and not l.startswith("#")]
+    count = int(lines[0][1])
+    vertices = [tuple(map(float, l)) for l in lines[1:1 + count]]
+    return [[vertices[int(i)] for i in l[1:]] for l in lines[2 + count:]]
+
+
+def bezier_point(points, u, v):
+    """A bicubic Bézier patch (16 points, u fastest) at (u, v)."""
+    bu = [(1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3]
+    bv = [(1 - v) ** 3, 3 * v * (1 - v) ** 2, 3 * v * v * (1 - v), v ** 3]
+    return [sum(bu[i] * bv[j] * points[4 * j + i][c] for i in range(4) for j in range(4))
+            for c in range(3)]
+
+
+@check("batch")
+def teapot_side_view_covers_its_silhouette(b, me):
+    """Geometry "teapot" seen from the side (orthographic, 64×48 pixels of 1/8 unit) covers the
+    pixels that its Bézier patches, sampled densely here, fall in; lit from the eye, every pixel
+    inside the silhouette is finite and not black (the degenerate lid and bottom patches)."""
+    options = ("Format 64 48 1\nPixelSamples 4 4\nPixelFilter \"box\" 1 1\n"
+               "Projection \"orthographic\"\nScreenWindow -4 4 -3 3\n"
+               "Translate 0 0 5\nRotate -90 1 0 0\nTranslate -0.25 0 -1.575\n")
+    world = ("LightSource \"distantlight\" 1 \"from\" [0 1 0] \"to\" [0 0 0]\n"
+             "Surface \"matte\"\nGeometry \"teapot\"\n")
+    b.frame(me, "a", options, world)
+    yield
+    image = b.image(me, "a")
+    expected = set()
+    steps = 48
+    for patch in teapot_patches():
+        for i in range(steps + 1):
+            for j in range(steps + 1):
+                x, _, z = bezier_point(patch, i / steps, j / steps)
+                expected.add((int((x - 0.25 + 4) * 8), int((3 - (z - 1.575)) * 8)))
+    # A pixel the patches touch may be missed by all 16 samples: a few more expected than seen.
+    covered = {xy for xy, p in image.pixels.items() if p[3] > 0}
+    differ = len(covered ^ expected)
+    expect(differ <= 0.04 * len(expected),
+           f"{differ} pixels differ from the {len(expected)} the patches cover")
+    expect_close(len(covered) / (64 * 48), len(expected) / (64 * 48), 0.05, "covered fraction")
+    inside = [xy for xy, p in image.pixels.items() if p[3] == 1]
+    for xy in inside:
+        value = image.pixels[xy]
+        expect(all(math.isfinite(c) for c in value), f"pixel {xy} is {value}")
+        expect(max(value[:3]) > 0.02, f"pixel {xy} inside the silhouette is black: {value}")
+
+
 @check("batch")
 def colour_samples_convert_to_rgb(b, me):
     """RISpec §4.1.3 ColorSamples: colours have n components, converted to RGB by nRGB (n rows

@@ -446,5 +446,27 @@ TEST(SceneBuilderUnused, DisplayParametersAreTyped) {
     EXPECT_EQ(r.messages, "test.rib:1:57: warning: Display: unknown parameter \"bogus\" ignored\n");
 }
 
+// ---- Geometry -------------------------------------------------------------------------------
+
+TEST(SceneBuilderGeometry, TeapotAddsItsPatchesAndOtherTypesWarn) {
+    const BuildResult r =
+        Build("WorldBegin\nGeometry \"teapot\"\nGeometry \"bunny\"\nGeometry \"cow\"\nWorldEnd\n");
+    EXPECT_EQ(r.errors, 0);
+    EXPECT_EQ(r.messages,
+              "test.rib:3:1: warning: Geometry \"bunny\" is not supported (gonio has only "
+              "\"teapot\"): skipped\n"
+              "test.rib:4:1: warning: Geometry \"cow\" is not supported (gonio has only "
+              "\"teapot\"): skipped\n");
+    ASSERT_EQ(r.frames.size(), 1u);
+    EXPECT_EQ(r.frames[0].shapes.size(), 32u);
+}
+
+TEST(SceneBuilderGeometry, TeapotOutsideTheWorldIsAnError) {
+    const BuildResult r = Build("Geometry \"teapot\"\n");
+    EXPECT_EQ(r.errors, 1);
+    EXPECT_NE(r.messages.find("test.rib:1:1: error: Geometry is a primitive"), std::string::npos)
+        << r.messages;
+}
+
 }  // namespace
 }  // namespace gonio
