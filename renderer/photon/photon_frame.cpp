@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "base/math.h"
+#include "base/system_memory.h"
 #include "brdfsim/photon_map.h"
 #include "renderer/raytrace/ray_scene.h"
 
@@ -43,6 +44,21 @@ bool WriteMap(const std::string& path, const PhotonTraceResult& result, const Fi
         diagnostics.Error(loc, std::string("BRDFLight: ") + e.what());
         return false;
     }
+}
+
+// A located error, instead of std::bad_alloc, for more photon paths than this machine holds.
+bool PhotonsFitInMemory(const Frame& frame, const BrdfLightOptions& options,
+                        Diagnostics& diagnostics) {
+    const double needed = PhotonTraceBytes(uint64_t(options.rays), frame.options.colorComponents);
+    const double memory = PhysicalMemoryBytes();
+    if (memory == 0 || needed <= memory) return true;
+    diagnostics.Error(options.loc,
+                      "BRDFLight: " + std::to_string(uint64_t(options.rays)) +
+                          " photon paths need " + ByteSize(needed) + ", more than the " +
+                          ByteSize(memory) +
+                          " of this machine's memory: trace fewer, with different seeds, and "
+                          "merge the maps (gonio brdf merge)");
+    return false;
 }
 
 }  // namespace
@@ -84,6 +100,8 @@ bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagno
         return false;
     }
     if (!CheckWritable(output, options.loc, diagnostics)) return false;
+    // A scene error (exit 1), not an output one: reported, nothing traced.
+    if (!PhotonsFitInMemory(frame, options, diagnostics)) return true;
 
     const RayScene scene(frame, diagnostics, RayScene::Traversal::kFast);
     const MicroBrdfTable brdfs = BuildMicroBrdfTable(frame, diagnostics);

@@ -264,6 +264,10 @@ MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics)
     return table;
 }
 
+double PhotonTraceBytes(uint64_t paths, int ncomps) {
+    return double(paths) * double(kFirstColumns + ncomps) * sizeof(float);
+}
+
 PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
                                const MicroBrdfTable& brdfs, const PhotonTraceSettings& settings) {
     const auto start = std::chrono::steady_clock::now();

@@ -60,6 +60,11 @@ struct PhotonTraceResult {
 using MicroBrdfTable = std::unordered_map<const SceneShape*, MicroBrdf>;
 MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics);
 
+// The memory TracePhotons holds at most: every path's photon row, for `paths` paths of `ncomps`
+// colour components (it keeps the rows in path order, so that a seed gives one map whatever
+// the thread count).
+double PhotonTraceBytes(uint64_t paths, int ncomps);
+
 PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
                                const MicroBrdfTable& brdfs, const PhotonTraceSettings& settings);
 

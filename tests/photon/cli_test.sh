@@ -60,6 +60,15 @@ for angles in "0 0 0 0" "30 0 45 90" "45 0 45 180" "60 0 30 0" "20 0 70 270"; do
     [ "$ok" = 1 ] || fail "brdf eval $angles = '$value', expected 1/pi within 5%"
 done
 
+# More photon paths than the machine's memory holds: a located error, exit 1, no map.
+sed 's/"integer rays" [0-9]*/"integer rays" 2000000000000/' "$RIBS/lambert_plane.rib" > huge.rib
+"$GONIO" render huge.rib -o huge.pm > huge.txt 2>&1
+code=$?
+[ "$code" -eq 1 ] || fail "huge ray count: exit $code, expected 1: $(cat huge.txt)"
+grep -q 'huge.rib:3:[0-9]*: error: BRDFLight: 2000000000000 photon paths need' huge.txt ||
+    fail "huge ray count: $(cat huge.txt)"
+[ ! -e huge.pm ] || fail "huge ray count: a map was written"
+
 if [ "$failures" -gt 0 ]; then
     echo "$failures failure(s)"
     exit 1
