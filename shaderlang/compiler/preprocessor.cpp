@@ -118,12 +118,19 @@ void Preprocessor::ProcessFile(const std::string& text, const std::string& fileN
     std::istringstream in(clean);
     std::string physical;
     int lineNumber = 0;
-    while (std::getline(in, physical)) {
+    // A file written on Windows ends its lines in CR LF: the CR is not part of the line (else a
+    // backslash before it would not splice the next one).
+    auto readLine = [&](std::string& out) {
+        if (!std::getline(in, out)) return false;
+        if (!out.empty() && out.back() == '\r') out.pop_back();
+        return true;
+    };
+    while (readLine(physical)) {
         ++lineNumber;
         int first = lineNumber;
         std::string line = physical;
         // Line splicing: a backslash at the end joins the next line.
-        while (!line.empty() && line.back() == '\\' && std::getline(in, physical)) {
+        while (!line.empty() && line.back() == '\\' && readLine(physical)) {
             line.pop_back();
             line += physical;
             ++lineNumber;

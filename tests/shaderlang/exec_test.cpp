@@ -156,6 +156,15 @@ TEST(ShadeExec, FloatSuffixes) {
     EXPECT_FLOAT_EQ(r.At(2, 0), 2.0f);
 }
 
+// A file with CR LF line ends: a backslash before the CR still splices the next line.
+TEST(ShadeExec, CrLfLineContinuations) {
+    auto r =
+        Shade("#define TWICE(x) \\\r\n    (2 * (x))\r\nsurface t() {\r\n  Ci = TWICE(u);\r\n}\r\n",
+              4, 1, "Ci");
+    ASSERT_EQ(r.width, 3) << r.diagnostics;
+    for (int i = 0; i < 4; ++i) EXPECT_FLOAT_EQ(r.At(0, i), 2 * (float(i) + 0.5f) / 4) << i;
+}
+
 TEST(ShadeExec, ExternReachesTheEnclosingShader) {
     auto r = Shade(R"(surface t() {
         float k = 2;
