@@ -505,6 +505,20 @@ def render_in_folder(gonio, folder, shaders, scene):
     return None
 
 
+def workspace_main(description, checks, prefix, shaders=None):
+    """The command line of a checks script run on one Workspace (`--gonio PATH`): writes the
+    shaders (name: source) into it and runs the checks; returns the exit status."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--gonio", required=True)
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix=prefix) as root:
+        ws = Workspace(os.path.abspath(args.gonio), root)
+        for name, source in (shaders or {}).items():
+            with open(ws.path(name), "w") as f:
+                f.write(source + "\n")
+        return run_checks(checks, ws)
+
+
 def run_checks(checks, subject):
     """Runs each check on `subject` (a Workspace, or the images the checks read) in turn,
     printing ok or FAIL with the reason for each and a summary; returns the exit status (1 when

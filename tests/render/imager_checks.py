@@ -7,13 +7,10 @@ map at raster coordinates, and its option() the frame's options.
 
     imager_checks.py --gonio build/bin/gonio"""
 
-import argparse
-import os
 import subprocess
 import sys
-import tempfile
 
-from analytic_checks import run_checks, Workspace, expect, read_images
+from analytic_checks import workspace_main, expect, read_images
 
 SIZE, HALF = 32, 2.0  # an orthographic frame of SIZE² pixels over [-HALF, HALF]²
 PIXEL = 2 * HALF / SIZE
@@ -165,12 +162,7 @@ CHECKS = [check_background_is_exact, check_unusable_imagers_are_reported,
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--gonio", required=True)
-    args = parser.parse_args()
-    gonio = os.path.abspath(args.gonio)
-    with tempfile.TemporaryDirectory(prefix="gonio_imager_") as root:
-        return run_checks(CHECKS, Workspace(gonio, root))
+    return workspace_main(__doc__.split("\n\n")[0], CHECKS, "gonio_imager_")
 
 
 if __name__ == "__main__":

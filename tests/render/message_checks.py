@@ -7,15 +7,12 @@ large for the machine is a located error.
 
     message_checks.py --gonio build/bin/gonio"""
 
-import argparse
 import math
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 
-from analytic_checks import run_checks, Workspace, expect, read_images
+from analytic_checks import workspace_main, expect, read_images
 
 SIZE, HALF = 16, 2.0  # an orthographic frame of SIZE² pixels over [-HALF, HALF]²
 RADIUS = 1.5          # the sphere's
@@ -199,16 +196,7 @@ CHECKS = [check_messages_and_aovs, check_lightsource, check_textureinfo,
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--gonio", required=True)
-    args = parser.parse_args()
-    gonio = os.path.abspath(args.gonio)
-    with tempfile.TemporaryDirectory(prefix="gonio_messages_") as root:
-        ws = Workspace(gonio, root)
-        for name, source in SHADERS.items():
-            with open(ws.path(name), "w") as f:
-                f.write(source + "\n")
-        return run_checks(CHECKS, ws)
+    return workspace_main(__doc__.split("\n\n")[0], CHECKS, "gonio_messages_", SHADERS)
 
 
 if __name__ == "__main__":

@@ -7,13 +7,11 @@ plugin, what needed it says so while the built-in formats still work.
 
     startup_checks.py --gonio build/bin/gonio"""
 
-import argparse
 import os
 import subprocess
 import sys
-import tempfile
 
-from analytic_checks import run_checks, Workspace, expect, read_images
+from analytic_checks import workspace_main, expect, read_images
 
 SCENE = """Format 8 6 1
 PixelSamples 1 1
@@ -106,15 +104,7 @@ CHECKS = [check_executable_does_not_link_oiio, check_render_without_textures_loa
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--gonio", required=True)
-    args = parser.parse_args()
-    with tempfile.TemporaryDirectory(prefix="gonio_startup_") as root:
-        ws = Workspace(os.path.abspath(args.gonio), root)
-        for name, source in SHADERS.items():
-            with open(ws.path(name), "w") as f:
-                f.write(source + "\n")
-        return run_checks(CHECKS, ws)
+    return workspace_main(__doc__.split("\n\n")[0], CHECKS, "gonio_startup_", SHADERS)
 
 
 if __name__ == "__main__":
