@@ -40,6 +40,54 @@ Imath::V3f SafeNormalize(const Imath::V3f& v, const Imath::V3f& fallback) {
     return len > 0 ? v / len : fallback;
 }
 
+// A curve segment's centre, tangent and radius at its parameter t (geometry/shape.h: four
+// control points a cubic segment, two a linear one, in the Embree vertex buffer's basis).
+struct CurveFrame {
+    V3f centre = V3f(0), tangent = V3f(0);
+    float radius = 0;
+};
+
+CurveFrame SegmentFrame(const CurveSet& curves, unsigned primID, float t) {
+    const uint32_t first = curves.segmentFirst[primID];
+    CurveFrame frame;
+    if (curves.basis == CurveSet::Basis::Linear) {
+        const V3f& a = curves.controlPoints[first];
+        const V3f& b = curves.controlPoints[first + 1];
+        frame.centre = a + t * (b - a);
+        frame.tangent = b - a;
+        frame.radius = curves.radii[first] + t * (curves.radii[first + 1] - curves.radii[first]);
+        return frame;
+    }
+    const PatchBasis basis = curves.basis == CurveSet::Basis::Bezier    ? BezierBasis()
+                             : curves.basis == CurveSet::Basis::BSpline ? BSplineBasis()
+                                                                        : CatmullRomBasis();
+    const std::array<float, 4> w = BasisWeights(basis.matrix, t);
+    // The derivative's weights: [3t² 2t 1 0] · M.
+    std::array<float, 4> dw{};
+    for (int j = 0; j < 4; ++j)
+        dw[j] = 3 * t * t * basis.matrix[0][j] + 2 * t * basis.matrix[1][j] + basis.matrix[2][j];
+    for (int k = 0; k < 4; ++k) {
+        frame.centre += w[k] * curves.controlPoints[first + k];
+        frame.tangent += dw[k] * curves.controlPoints[first + k];
+        frame.radius += w[k] * curves.radii[first + k];
+    }
+    return frame;
+}
+
+// The ribbon turned towards the ray: Ng is the part of −dir across the tangent, and u is where
+// the hit lies between the two edges (the side vector T × dir spans the visible width).
+void FaceTheRay(const CurveSet& curves, unsigned primID, float t, const V3f& dir,
+                SurfaceGeometry* g) {
+    const CurveFrame frame = SegmentFrame(curves, primID, t);
+    const V3f tangent = SafeNormalize(frame.tangent, g->Ng);
+    const V3f side = SafeNormalize(tangent.cross(dir), V3f(0));
+    if (side == V3f(0)) return;  // looking along the curve: no width to face
+    g->Ng = SafeNormalize(side.cross(tangent), g->Ng);
+    if (g->Ng.dot(dir) > 0) g->Ng = -g->Ng;
+    if (frame.radius > 0)
+        g->u = std::clamp(0.5f + (g->P - frame.centre).dot(side) / (2 * frame.radius), 0.f, 1.f);
+}
+
 }  // namespace
 
 void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float* out) {
@@ -135,58 +183,6 @@ ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP
     }
     return hit;
 }
-
-namespace {
-
-// A curve segment's centre, tangent and radius at its parameter t (geometry/shape.h: four
-// control points a cubic segment, two a linear one, in the Embree vertex buffer's basis).
-struct CurveFrame {
-    V3f centre = V3f(0), tangent = V3f(0);
-    float radius = 0;
-};
-
-CurveFrame SegmentFrame(const CurveSet& curves, unsigned primID, float t) {
-    const uint32_t first = curves.segmentFirst[primID];
-    CurveFrame frame;
-    if (curves.basis == CurveSet::Basis::Linear) {
-        const V3f& a = curves.controlPoints[first];
-        const V3f& b = curves.controlPoints[first + 1];
-        frame.centre = a + t * (b - a);
-        frame.tangent = b - a;
-        frame.radius = curves.radii[first] + t * (curves.radii[first + 1] - curves.radii[first]);
-        return frame;
-    }
-    const PatchBasis basis = curves.basis == CurveSet::Basis::Bezier    ? BezierBasis()
-                             : curves.basis == CurveSet::Basis::BSpline ? BSplineBasis()
-                                                                        : CatmullRomBasis();
-    const std::array<float, 4> w = BasisWeights(basis.matrix, t);
-    // The derivative's weights: [3t² 2t 1 0] · M.
-    std::array<float, 4> dw{};
-    for (int j = 0; j < 4; ++j)
-        dw[j] = 3 * t * t * basis.matrix[0][j] + 2 * t * basis.matrix[1][j] + basis.matrix[2][j];
-    for (int k = 0; k < 4; ++k) {
-        frame.centre += w[k] * curves.controlPoints[first + k];
-        frame.tangent += dw[k] * curves.controlPoints[first + k];
-        frame.radius += w[k] * curves.radii[first + k];
-    }
-    return frame;
-}
-
-// The ribbon turned towards the ray: Ng is the part of −dir across the tangent, and u is where
-// the hit lies between the two edges (the side vector T × dir spans the visible width).
-void FaceTheRay(const CurveSet& curves, unsigned primID, float t, const V3f& dir,
-                SurfaceGeometry* g) {
-    const CurveFrame frame = SegmentFrame(curves, primID, t);
-    const V3f tangent = SafeNormalize(frame.tangent, g->Ng);
-    const V3f side = SafeNormalize(tangent.cross(dir), V3f(0));
-    if (side == V3f(0)) return;  // looking along the curve: no width to face
-    g->Ng = SafeNormalize(side.cross(tangent), g->Ng);
-    if (g->Ng.dot(dir) > 0) g->Ng = -g->Ng;
-    if (frame.radius > 0)
-        g->u = std::clamp(0.5f + (g->P - frame.centre).dot(side) / (2 * frame.radius), 0.f, 1.f);
-}
-
-}  // namespace
 
 ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float v,
                         const Imath::V3f& objectP, const Imath::V3f& objectNg,
