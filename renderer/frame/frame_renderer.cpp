@@ -9,11 +9,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <numeric>
 #include <unordered_map>
 
 #include "base/progress.h"
 #include "base/random.h"
 #include "base/system_memory.h"
+#include "renderer/frame/shading_points.h"
 #include "renderer/image/film.h"
 #include "renderer/image/image_writer.h"
 #include "renderer/raytrace/camera.h"
@@ -111,7 +113,10 @@ class TileRenderer {
           outputs_(outputs),
           outputFloats_(OutputFloats(outputs)),
           ncomps_(options.colorComponents),
-          colorToRgb_(options.colorToRgb) {}
+          colorToRgb_(options.colorToRgb),
+          xsamples_(std::max(1, int(std::lround(options.xsamples)))),
+          ysamples_(std::max(1, int(std::lround(options.ysamples)))),
+          sharing_(PixelFootprint(camera, options)) {}
 
     // Renders the samples of `pixels` into `film`; returns the number of rays traced.
     uint64_t Render(const Imath::Box2i& pixels, const SampleGenerator& generator, FilmTile* film);
@@ -119,6 +124,12 @@ class TileRenderer {
   private:
     void TraceAndShade();
     void Splat(FilmTile* film);
+    // The world width of one pixel near the image centre, at distance 0 and its growth per
+    // unit distance along the ray (what ShadingPointSharing compares hit distances with).
+    static ShadingPointSharing PixelFootprint(const Camera& camera, const Options& options);
+    // Fills shaded_ (which members of the group to shade) and shadedBy_ (per member, whose
+    // shading it takes: an index into shaded_), by the group's ShadingRate.
+    void ChooseShadedPoints(const Attributes& attributes, const std::vector<int>& members);
 
     std::vector<SampleState> samples_;
     // Reused from layer to layer so that their colour storage is allocated once.
@@ -134,6 +145,8 @@ class TileRenderer {
     std::unordered_map<const Attributes*, size_t> groupIndex_;
     ShadingBatch batch_;
     std::vector<float> Ci_, Oi_, outputValues_, filmValues_;
+    std::vector<ShadingPointHit> sharingHits_;
+    std::vector<int> shaded_, shadedBy_;
     // The next visible (not back-face culled) hit of a sample, or false.
     bool NextHit(SampleState& sample, SurfacePoint* sp, float* t);
     void ShadeLayer();
@@ -155,8 +168,38 @@ class TileRenderer {
     int outputFloats_;
     int ncomps_;
     std::vector<float> colorToRgb_;
+    int xsamples_, ysamples_;
+    ShadingPointSharing sharing_;
     uint64_t rays_ = 0;
 };
+
+ShadingPointSharing TileRenderer::PixelFootprint(const Camera& camera, const Options& options) {
+    const float x = 0.5f * float(options.xres), y = 0.5f * float(options.yres);
+    const float time = options.shutterOpen;
+    const CameraRay here = camera.GenerateRay(x, y, 0.5f, 0.5f, time);
+    const CameraRay next = camera.GenerateRay(x + 1, y, 0.5f, 0.5f, time);
+    return ShadingPointSharing((next.org - here.org).length(),
+                               (next.dir.normalized() - here.dir.normalized()).length());
+}
+
+void TileRenderer::ChooseShadedPoints(const Attributes& attributes,
+                                      const std::vector<int>& members) {
+    const int n = int(members.size());
+    if (attributes.matte ||
+        !ShadingPointSharing::Shares(attributes.shadingRate, xsamples_, ysamples_)) {
+        shaded_.resize(size_t(n));
+        std::iota(shaded_.begin(), shaded_.end(), 0);
+        shadedBy_ = shaded_;
+        return;
+    }
+    sharingHits_.resize(size_t(n));
+    for (int j = 0; j < n; ++j) {
+        const int k = members[j];
+        const SampleState& sample = samples_[hitSamples_[k]];
+        sharingHits_[j] = {sample.x, sample.y, hitT_[k], sample.ray.dir, &points_[k]};
+    }
+    sharing_.Cluster(sharingHits_, attributes.shadingRate, &shaded_, &shadedBy_);
+}
 
 void TileRenderer::ToRgb(const float* colour, float* rgb) const {
     for (int c = 0; c < 3; ++c) {
@@ -286,7 +329,9 @@ void TileRenderer::ShadeLayer() {
         batch.neighbourRays.clear();
         batch.randomSeeds.clear();
         const bool neighbours = !attributes->matte && shading_.WantsNeighbourRays(attributes);
-        for (int k : batchMembers) {
+        ChooseShadedPoints(*attributes, batchMembers);
+        for (int shadedMember : shaded_) {
+            const int k = batchMembers[shadedMember];
             const SampleState& sample = samples_[hitSamples_[k]];
             batch.points.push_back(&points_[k]);
             batch.incident.push_back(sample.ray.dir * hitT_[k]);
@@ -294,10 +339,10 @@ void TileRenderer::ShadeLayer() {
             if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hitTnear_[k]));
             batch.randomSeeds.push_back(sample.randomSeed);
         }
-        Ci_.assign(batchMembers.size() * ncomps_, 0.f);
-        Oi_.assign(batchMembers.size() * ncomps_, 0.f);
+        Ci_.assign(shaded_.size() * ncomps_, 0.f);
+        Oi_.assign(shaded_.size() * ncomps_, 0.f);
         if (outputFloats_ > 0) {
-            outputValues_.assign(batchMembers.size() * outputFloats_, 0.f);
+            outputValues_.assign(shaded_.size() * outputFloats_, 0.f);
             batch.outputs = &outputs_;
             batch.outputValues = outputValues_.data();
         }
@@ -305,12 +350,13 @@ void TileRenderer::ShadeLayer() {
         for (size_t j = 0; j < batchMembers.size(); ++j) {
             SampleState& sample = samples_[hitSamples_[batchMembers[j]]];
             sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
+            const size_t r = size_t(shadedBy_[j]);           // the shaded point this sample shows
             // A matte object hides what lies behind it and adds nothing itself (RISpec
             // §4.2.5): its opacity is the surface's Os, not a shader's output.
             const float* opacities =
-                attributes->matte ? points_[batchMembers[j]].Os.data() : &Oi_[j * ncomps_];
+                attributes->matte ? points_[batchMembers[j]].Os.data() : &Oi_[r * ncomps_];
             float rgb[3], opacityRgb[3];
-            ToRgb(&Ci_[j * ncomps_], rgb);
+            ToRgb(&Ci_[r * ncomps_], rgb);
             OpacityToRgb(opacities, opacityRgb);
             float remaining = 0, covered = 0;
             for (int c = 0; c < 3; ++c) {
@@ -326,7 +372,7 @@ void TileRenderer::ShadeLayer() {
             // AOVs are not premultiplied: each layer adds its value weighted by the coverage
             // it adds, so an opaque surface's AOV is its value.
             for (int k = 0; k < outputFloats_; ++k)
-                sample.outputs[k] += covered * outputValues_[j * outputFloats_ + k];
+                sample.outputs[k] += covered * outputValues_[r * outputFloats_ + k];
         }
     }
 }

@@ -55,6 +55,10 @@ struct Attributes {
     enum class Orientation { Outside, Inside, LeftHanded, RightHanded };
     Orientation orientation = Orientation::Outside;
     bool twoSided = true;  // Sides 2
+    // ShadingRate: the raster area, in pixels, one shading point stands for. Camera samples
+    // whose hits lie within it on the same surface share one shaded colour (docs/user-guide.md,
+    // "Shading rate"); 1 by default, as in RenderMan.
+    float shadingRate = 1;
     bool matte = false;
     PatchBasis ubasis, vbasis;  // bezier unless Basis says otherwise
     std::string identifier;     // Attribute "identifier" "name"

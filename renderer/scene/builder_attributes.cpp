@@ -151,9 +151,16 @@ void SceneBuilder::Exterior(const std::string& name, const ParamList& params, co
     SetShader(&MutableAttributes().exterior, name, params, loc);
 }
 
+void SceneBuilder::ShadingRate(float size, const FileLoc& loc) {
+    if (!(size > 0) || !std::isfinite(size)) {
+        diagnostics_.Error(loc, "ShadingRate must be a positive, finite area in pixels");
+        return;
+    }
+    MutableAttributes().shadingRate = size;
+}
+
 // ---- REYES-only attributes: accepted, ignored with one note each ------------------------------
 
-void SceneBuilder::ShadingRate(float, const FileLoc& loc) { IgnoredRequest("ShadingRate", loc); }
 void SceneBuilder::ShadingInterpolation(const std::string&, const FileLoc& loc) {
     IgnoredRequest("ShadingInterpolation", loc);
 }

@@ -33,7 +33,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tests", "render"))
 # One oiiotool call reads every image; checks fail by raising CheckFailed.
-from analytic_checks import CheckFailed, Workspace, expect, read_images  # noqa: E402
+from analytic_checks import (CheckFailed, EVERY_SAMPLE_SHADED, Workspace, expect,  # noqa: E402
+                             read_images)
 
 
 def measured_grid(ws, model, rays, theta_range, optimiser, out):
@@ -96,6 +97,7 @@ def frames(surfaces, camera, lights, size=48, fov=30):
         out += (f"FrameBegin {number}\n"
                 f'Display "{name}.tif" "tiff" "rgba"\nQuantize "rgba" 0 0 0 0\n'
                 f'Format {size} {size} 1\nPixelSamples 2 2\nPixelFilter "box" 1 1\n'
+                f"{EVERY_SAMPLE_SHADED}"
                 f'Projection "perspective" "fov" {fov}\n{camera}'
                 f"WorldBegin\n{light_lines}{surface}\n"
                 'Polygon "P" [-20 -20 0  20 -20 0  20 20 0  -20 20 0]\n'

@@ -131,9 +131,16 @@ def float_tiff(name):
     return f'Quantize "rgba" 0 0 0 0\nDisplay "{name}" "tiff" "rgba"\n'
 
 
+# Shades every camera sample (at up to 4x4 samples), so that a pixel is the mean of the shading
+# at its samples, which is what the analytic checks compute; at the default ShadingRate 1 a
+# pixel shows the shading of one point near its centre (docs/user-guide.md, "Shading rate").
+EVERY_SAMPLE_SHADED = "ShadingRate 0.0625\n"
+
+
 def ortho(fmt="128 128", window="-2 2 -2 2", extra=""):
-    """Options of an orthographic camera 5 units in front of the world origin, box filter."""
-    return (f"Format {fmt} 1\nPixelSamples 4 4\nPixelFilter \"box\" 1 1\n"
+    """Options of an orthographic camera 5 units in front of the world origin, box filter,
+    every sample shaded."""
+    return (f"Format {fmt} 1\nPixelSamples 4 4\nPixelFilter \"box\" 1 1\n{EVERY_SAMPLE_SHADED}"
             f"Projection \"orthographic\"\nScreenWindow {window}\n{extra}Translate 0 0 5\n")
 
 

@@ -22,7 +22,8 @@ import subprocess
 import sys
 import tempfile
 
-from analytic_checks import expect, read_images, render_in_folder, run_checks
+from analytic_checks import (EVERY_SAMPLE_SHADED, expect, read_images, render_in_folder,
+                             run_checks)
 
 SHADERS = {
     # Gathers light at P moved towards the camera (world -z) by `dz` where x > `from_x`.
@@ -55,6 +56,7 @@ SUBSAMPLES = 4
 
 def camera(roll=0):
     return (f"Format {SIZE} {SIZE} 1\nPixelSamples 4 4\nPixelFilter \"box\" 1 1\n"
+            f"{EVERY_SAMPLE_SHADED}"
             f"Projection \"orthographic\"\nScreenWindow -{HALF} {HALF} -{HALF} {HALF}\n"
             f"Rotate {roll} 0 0 1\nTranslate 0 0 5\n")
 

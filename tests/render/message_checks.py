@@ -12,7 +12,7 @@ import os
 import subprocess
 import sys
 
-from analytic_checks import workspace_main, expect, read_images
+from analytic_checks import EVERY_SAMPLE_SHADED, workspace_main, expect, read_images
 
 SIZE, HALF = 16, 2.0  # an orthographic frame of SIZE² pixels over [-HALF, HALF]²
 RADIUS = 1.5          # the sphere's
@@ -20,7 +20,7 @@ RADIUS = 1.5          # the sphere's
 OPTIONS = f"""Format {SIZE} {SIZE} 1
 PixelSamples 4 4
 PixelFilter "box" 1 1
-Quantize "rgba" 0 0 0 0
+{EVERY_SAMPLE_SHADED}Quantize "rgba" 0 0 0 0
 Projection "orthographic"
 ScreenWindow -{HALF} {HALF} -{HALF} {HALF}
 Translate 0 0 5

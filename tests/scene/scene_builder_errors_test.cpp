@@ -316,12 +316,33 @@ TEST(SceneBuilderFrames, PlusAddsADisplayAndAPlainNameReplacesThem) {
 }
 
 TEST(SceneBuilderFrames, ReyesOnlyRequestsAreNotedOnce) {
-    const BuildResult r =
-        Build("WorldBegin\nShadingRate 1\nShadingRate 4\nBound [0 1 0 1 0 1]\nWorldEnd\n");
+    const BuildResult r = Build(
+        "WorldBegin\nBound [0 1 0 1 0 1]\nShadingInterpolation \"smooth\"\nBound [0 1 0 1 0 "
+        "1]\nWorldEnd\n");
     EXPECT_EQ(r.messages,
-              "test.rib:2:1: note: ShadingRate is accepted and ignored by this ray tracer\n"
-              "test.rib:4:1: note: Bound is accepted and ignored by this ray tracer\n");
+              "test.rib:2:1: note: Bound is accepted and ignored by this ray tracer\n"
+              "test.rib:3:1: note: ShadingInterpolation is accepted and ignored by this ray "
+              "tracer\n");
     EXPECT_EQ(r.errors + r.warnings, 0);
+}
+
+TEST(SceneBuilderAttributes, ShadingRateIsAnAttribute) {
+    const BuildResult r = Build(
+        "WorldBegin\nShadingRate 4\nSphere 1 -1 1 360\nAttributeBegin\nShadingRate 0.25\n"
+        "Sphere 1 -1 1 360\nAttributeEnd\nSphere 1 -1 1 360\nWorldEnd\n");
+    EXPECT_EQ(r.errors + r.warnings, 0) << r.messages;
+    ASSERT_EQ(r.frames.size(), 1u);
+    ASSERT_EQ(r.frames[0].shapes.size(), 3u);
+    EXPECT_FLOAT_EQ(r.frames[0].shapes[0].attributes->shadingRate, 4);
+    EXPECT_FLOAT_EQ(r.frames[0].shapes[1].attributes->shadingRate, 0.25f);
+    EXPECT_FLOAT_EQ(r.frames[0].shapes[2].attributes->shadingRate, 4);
+}
+
+TEST(SceneBuilderAttributes, ShadingRateMustBePositive) {
+    const BuildResult r = Build("WorldBegin\nShadingRate 0\nShadingRate -1\nWorldEnd\n");
+    EXPECT_EQ(r.messages,
+              "test.rib:2:1: error: ShadingRate must be a positive, finite area in pixels\n"
+              "test.rib:3:1: error: ShadingRate must be a positive, finite area in pixels\n");
 }
 
 TEST(SceneBuilderFrames, PerspectiveIsTreatedAsProjection) {

@@ -1,0 +1,85 @@
+#include "renderer/frame/shading_points.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gonio {
+namespace {
+
+// Hits whose points lie further apart than this many cell widths (at their depth) are on
+// different parts of the surface: a fold, a silhouette seen past, or another instance.
+constexpr float kDistanceInCells = 2;
+// Normals further apart than about 25 degrees: a crease, or the other face of a thin box.
+constexpr float kMinNormalCosine = 0.9f;
+
+}  // namespace
+
+bool ShadingPointSharing::CanShare(const ShadingPointHit& hit, const ShadingPointHit& shaded,
+                                   float cell) const {
+    const SurfacePoint& a = *hit.point;
+    const SurfacePoint& b = *shaded.point;
+    if (a.shape != b.shape || a.record != b.record) return false;
+    // Uniform primitive variables (a face's Cs, a patch's id) change from face to face; REYES
+    // dices every face on its own grid too.
+    if (a.stencils.uniform != b.stencils.uniform) return false;
+    // Both sides of a two-sided sheet can show in one cell; they shade differently.
+    if ((a.Ng.dot(hit.dir) < 0) != (b.Ng.dot(shaded.dir) < 0)) return false;
+    if (a.N.dot(b.N) < kMinNormalCosine) return false;
+    const float footprint = footprintAt0_ + footprintPerDistance_ * shaded.t;
+    return (a.P - b.P).length() <= kDistanceInCells * cell * footprint;
+}
+
+void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, float shadingRate,
+                                  std::vector<int>* shaded, std::vector<int>* shadedBy) {
+    const int n = int(hits.size());
+    const float cell = std::sqrt(shadingRate);
+    cells_.resize(size_t(n));
+    for (int i = 0; i < n; ++i) {
+        const float cx = hits[i].x / cell, cy = hits[i].y / cell;
+        const float fx = std::floor(cx), fy = std::floor(cy);
+        const float dx = cx - fx - 0.5f, dy = cy - fy - 0.5f;
+        cells_[i] = {(long long)fx, (long long)fy, dx * dx + dy * dy, i};
+    }
+    // Within a cell, the hits nearest its centre come first and are the ones shaded: shading
+    // the first sample instead would shift every highlight and texture by most of a stratum
+    // towards the cell's corner. Ties go to the earlier sample, so the order is fixed.
+    std::sort(cells_.begin(), cells_.end(), [](const CellEntry& a, const CellEntry& b) {
+        if (a.cellY != b.cellY) return a.cellY < b.cellY;
+        if (a.cellX != b.cellX) return a.cellX < b.cellX;
+        if (a.centreDistance != b.centreDistance) return a.centreDistance < b.centreDistance;
+        return a.hit < b.hit;
+    });
+    shadedBy->assign(size_t(n), -1);
+    for (int begin = 0; begin < n;) {
+        int end = begin + 1;
+        while (end < n && cells_[end].cellX == cells_[begin].cellX &&
+               cells_[end].cellY == cells_[begin].cellY)
+            ++end;
+        // The hits of one cell: each takes the first one before it that it can share with.
+        for (int i = begin; i < end; ++i) {
+            const int hit = cells_[i].hit;
+            (*shadedBy)[hit] = hit;
+            for (int j = begin; j < i; ++j) {
+                const int candidate = cells_[j].hit;
+                if ((*shadedBy)[candidate] != candidate) continue;
+                if (CanShare(hits[hit], hits[candidate], cell)) {
+                    (*shadedBy)[hit] = candidate;
+                    break;
+                }
+            }
+        }
+        begin = end;
+    }
+    // Number the shaded hits in sample order and point every hit at its number.
+    shaded->clear();
+    std::vector<int>& numberOf = scratchNumbers_;
+    numberOf.assign(size_t(n), -1);
+    for (int i = 0; i < n; ++i)
+        if ((*shadedBy)[i] == i) {
+            numberOf[i] = int(shaded->size());
+            shaded->push_back(i);
+        }
+    for (int i = 0; i < n; ++i) (*shadedBy)[i] = numberOf[(*shadedBy)[i]];
+}
+
+}  // namespace gonio
