@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/raytrace/ray_scene.h"
+#include "renderer/shading/ambient_light_globals.h"
 #include "renderer/shading/frame_shaders.h"
 #include "renderer/shading/named_textures.h"
 #include "renderer/shading/surface_shading.h"
@@ -156,6 +157,7 @@ class RenderContext : public sl::ShadingContext {
     M44f worldFromCurrent_;
     sl::MessageShaders messageShaders_;
     bool captureLights_ = false;
+    AmbientLightGlobals ambientGlobals_;  // an ambient light's P, N, I (the surface's)
 };
 
 }  // namespace gonio

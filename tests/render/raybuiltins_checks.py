@@ -28,6 +28,8 @@ method, pbrt-v3 §13.6.3). So, at 1024 samples:
 * gather() over the disc: hits/samples is 0.5, the mean "ray:length" of the hits is
   E[h / cos θ | θ <= θ0] = 2h(1 - cos θ0) / sin²θ0 = 1.1716, their mean "surface:Ci" is Cs,
   and hits + misses = samples;
+* an ambient light in the style of Pixie's ambientocclusion runs at the surface points: a ground
+  point at distance rho from the disc's axis gets Cl = 1 - F(rho);
 * visibility() across the disc is 0 and beside it 1; transmission() through it with Opacity
   0.25 is 0.75 and beside it 1;
 * the frame is the same, bit for bit, with --threads 1 and --threads 2.
@@ -55,6 +57,21 @@ import tempfile
 from analytic_checks import expect, read_images, render_in_folder, run_checks
 
 SHADERS = {
+    # An ambient light in the style of Pixie's ambientocclusion: it runs at the surface points.
+    "occlusionlight.sl": """
+light occlusionlight(float samples = 1024) {
+    normal Nf = faceforward(normalize(N), I);
+    Cl = 1 - occlusion(P, Nf, samples);
+}
+""",
+    # The ambient light at each point, and where the point is (world x, y).
+    "ambientonly.sl": """
+surface ambientonly() {
+    point Pw = transform("world", P);
+    Ci = color(comp(ambient(), 0), xcomp(Pw), ycomp(Pw));
+    Oi = 1;
+}
+""",
     "probe.sl": """
 /* One ray-traced built-in at the world point `at` about the world axis `axis`. */
 surface probe(string mode = "occlusion", distribution = "cosine", envmap = "";
@@ -130,7 +147,13 @@ FRAMES = {
     disc(1e4, 1, 'Surface "matte" "Ka" 0 "Kd" 0.5\n'),
     "gather_disc": probe(mode="gather") + disc(1, 1, CONSTANT),
     "segments": probe(mode="segment") + disc(1, 1, 'Opacity [0.25 0.25 0.25]\n'),
+    # Seen from above (camera at world z = +5 looking down): a ground plane under a disc the
+    # camera sees through (one-sided, facing down).
+    "ambient_light": 'LightSource "occlusionlight" 1\nSurface "ambientonly"\n'
+    'Polygon "P" [-3 -3 0  -3 3 0  3 3 0  3 -3 0]\n' +
+    disc(1, 1, 'Sides 1\nReverseOrientation\n'),
 }
+CAMERA_ABOVE = CAMERA.replace("Translate 0 0 5", "Rotate 180 1 0 0\nTranslate 0 0 -5")
 
 
 def off_axis_form_factor(a, h, rho):
@@ -206,6 +229,18 @@ def gather_counts_lengths_and_colours(images):
     check_all(image, 2, CS[0], 0.02 * CS[0], "gather mean surface:Ci (and hits + misses)")
 
 
+def an_ambient_light_runs_at_the_surface_points(images):
+    """Pixie's ambientocclusion style: Cl = 1 - occlusion(P, faceforward(N, I)) at each ground
+    point, against the off-axis form factor of the disc at the point's distance from its axis."""
+    worst = 0.0
+    for value in images["ambient_light"].pixels.values():
+        rho = math.hypot(value[1], value[2])
+        want = 1 - off_axis_form_factor(1, 1, rho)
+        worst = max(worst, abs(value[0] - want))
+    expect(worst <= 4 * SIGMA, f"ambient occlusion light: a pixel is {worst:.4f} from 1 - F(rho)")
+    print(f"     ambient occlusion light: worst pixel {worst:.5f} off 1 - F(rho)")
+
+
 def visibility_and_transmission(images):
     image = images["segments"]
     check_all(image, 0, 0.0, 1e-6, "visibility across the disc")
@@ -214,8 +249,8 @@ def visibility_and_transmission(images):
 
 
 def scene_text():
-    return "".join(f'FrameBegin {number}\n{CAMERA}Display "{name}.exr" "file" "rgba"\n'
-                   f'WorldBegin\n{world}WorldEnd\nFrameEnd\n'
+    return "".join(f'FrameBegin {number}\n{CAMERA_ABOVE if name == "ambient_light" else CAMERA}'
+                   f'Display "{name}.exr" "file" "rgba"\nWorldBegin\n{world}WorldEnd\nFrameEnd\n'
                    for number, (name, world) in enumerate(FRAMES.items(), 1))
 
 
@@ -250,7 +285,8 @@ def main():
 
     checks = [occlusion_matches_the_analytic_fractions, samplebase_jitters_origins_over_a_pixel,
               indirectdiffuse_is_irradiance_over_pi, gather_counts_lengths_and_colours,
-              visibility_and_transmission, same_with_one_and_two_threads]
+              an_ambient_light_runs_at_the_surface_points, visibility_and_transmission,
+              same_with_one_and_two_threads]
     return run_checks(checks, images[2])
 
 
