@@ -83,6 +83,7 @@ struct LightResult {
 // (builtins_raytrace.cpp): `count` rays, each from org along dir, in current space.
 struct SampledRays {
     enum class Kind : uint8_t {
+        AnyHit,        // whether anything lies within [bias, maxdist]: hit only
         FirstHit,      // the nearest hit within [bias, maxdist]: hit, t, P, N
         Shaded,        // FirstHit, and the colour arriving along the ray, as trace() brings it
         Transmission,  // the product of (1 - Os) of every surface within [bias, maxdist]

@@ -93,6 +93,10 @@ bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& 
             }
             continue;
         }
+        if (rays.kind == Kind::AnyHit) {
+            hits->hit[k] = scene_.Occluded(org, dir, tnear, tfar, time);
+            continue;
+        }
         RayHit hit;
         if (!scene_.Intersect(org, dir, tnear, tfar, time, &hit)) continue;
         hits->hit[k] = 1;

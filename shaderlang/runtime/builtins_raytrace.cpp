@@ -48,7 +48,7 @@ void HemisphereKernel(const BuiltinCall& call, bool shaded, const char* what) {
     std::vector<float> hits(size_t(n), 0.0f), colour(size_t(nc) * n, 0.0f);
     std::vector<std::vector<V3>> misses(static_cast<size_t>(n));
     const bool wantMisses = !o.environmentMap.empty();
-    RayBatch batch(context, what, shaded ? SampledRays::Kind::Shaded : SampledRays::Kind::FirstHit,
+    RayBatch batch(context, what, shaded ? SampledRays::Kind::Shaded : SampledRays::Kind::AnyHit,
                    [&](int p, const V3& dir, int k, const SampledHits& h) {
                        if (!h.hit[k]) {
                            if (wantMisses) misses[p].push_back(dir);
@@ -112,7 +112,7 @@ void SegmentKernel(const BuiltinCall& call, bool transmission) {
     const int samples = o.samples ? SampleCount(call, *o.samples) : 1;
     std::vector<float> sum(size_t(nc) * n, 0.0f);
     RayBatch batch(
-        context, what, transmission ? SampledRays::Kind::Transmission : SampledRays::Kind::FirstHit,
+        context, what, transmission ? SampledRays::Kind::Transmission : SampledRays::Kind::AnyHit,
         [&](int p, const V3&, int k, const SampledHits& h) {
             for (int c = 0; c < nc; ++c)
                 sum[size_t(c) * n + p] += transmission ? h.colour[size_t(c) * h.hit.size() + k]
