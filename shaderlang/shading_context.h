@@ -179,8 +179,8 @@ class ShadingContext {
         return 0;
     }
 
-    // Scratch that the ray-traced built-ins keep between calls in one shader run (a gather
-    // loop's samples, an occlusion()'s environment colour); theirs to define.
+    // Scratch that the ray-traced built-ins keep between calls in one shader run (each gather
+    // loop's samples, runtime/builtins_gather.cpp); theirs to define.
     std::shared_ptr<RayBuiltinState>& RayState() { return rayState_; }
 
     // attribute(), option(), rendererinfo(): the value named `name` as `type` (floats or a

@@ -1,5 +1,6 @@
 #include "shaderlang/compiler/gather_loop.h"
 
+#include <atomic>
 #include <string>
 
 namespace gonio::sl {
@@ -55,7 +56,10 @@ Node* Output(ParseState* state, int id, const std::string& name, Node* target) {
 }  // namespace
 
 Node* MakeGatherLoop(ParseState* state, const SourceLoc& loc, Node* call, Node* hit, Node* miss) {
-    const int id = state->gatherLoops++;
+    // Unique in the process, not only in the file: a light shader's gather runs inside the
+    // surface's gather body (diffuse() there runs the lights) with the same context.
+    static std::atomic<int> loops{0};
+    const int id = loops++;
     std::vector<Node*>& args = call->kids;
     if (args.size() < 5) {
         state->Error(loc, "gather expects (category, P, dir, angle, samples, ...)");

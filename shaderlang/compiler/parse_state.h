@@ -18,7 +18,6 @@ struct ParseState {
     int line = 1;
     int column = 1;
     int errors = 0;
-    int gatherLoops = 0;  // gather statements so far: each loop's id (gather_loop.h)
     // The parser's stacks once they outgrow their first 200 entries (sl_grammar.y's yyoverflow).
     std::vector<std::unique_ptr<char[]>> parserStacks;
 
