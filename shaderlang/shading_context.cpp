@@ -38,6 +38,11 @@ void ShadingContext::Trace(const float*, const float*, const uint8_t*, float* ou
     Unavailable("trace()", colorComponents_, out);
 }
 
+bool ShadingContext::TraceSampledRays(const std::string& what, const SampledRays&, SampledHits*) {
+    RuntimeWarning(what, what + " traces rays, and there is no scene to trace here; it gives 0");
+    return false;
+}
+
 bool ShadingContext::MeasuredBrdf(const std::string& name, int count, const float*, const float*,
                                   const uint8_t*, float* out) {
     std::fill_n(out, size_t(colorComponents_) * size_t(count), 0.0f);

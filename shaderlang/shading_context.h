@@ -10,6 +10,7 @@
 #include <Imath/ImathMatrix.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@
 #include "shaderlang/types.h"
 
 namespace gonio::sl {
+
+struct RayBuiltinState;  // runtime/builtins_raytrace.cpp
 
 // Message passing (RISpec §15.8): the shader whose parameters surface(), displacement(),
 // atmosphere() and lightsource() read.
@@ -74,6 +77,33 @@ struct LightResult {
         }
         return false;
     }
+};
+
+// Rays that occlusion(), indirectdiffuse(), gather(), transmission() and visibility() sample
+// (builtins_raytrace.cpp): `count` rays, each from org along dir, in current space.
+struct SampledRays {
+    enum class Kind : uint8_t {
+        AnyHit,        // whether anything lies within [bias, maxdist]: hit only
+        FirstHit,      // the nearest hit within [bias, maxdist]: hit, t, P, N
+        Shaded,        // FirstHit, and the colour arriving along the ray, as trace() brings it
+        Transmission,  // the product of (1 - Os) of every surface within [bias, maxdist]
+    };
+    Kind kind = Kind::FirstHit;
+    int count = 0;
+    const float* org = nullptr;      // 3 × count (component-major)
+    const float* dir = nullptr;      // 3 × count, unit length
+    const int* point = nullptr;      // count: the batch point each ray starts from
+    const float* maxdist = nullptr;  // count: where each ray ends (current-space distance)
+    // count: where each ray starts (current-space distance); a negative value asks for the
+    // renderer's own self-hit offset (trace()'s).
+    const float* bias = nullptr;
+};
+
+struct SampledHits {
+    std::vector<uint8_t> hit;   // count: 1 where the ray hit something within its range
+    std::vector<float> t;       // count: distance to the hit (current space)
+    std::vector<float> P, N;    // 3 × count: the hit point and its normal (current space)
+    std::vector<float> colour;  // ncomps × count: Shaded's colour, Transmission's product
 };
 
 class ShadingContext {
@@ -132,6 +162,26 @@ class ShadingContext {
 
     // trace(P, R): colour arriving at each P from direction R (ncomps × n), by a traced ray.
     virtual void Trace(const float* P, const float* R, const uint8_t* active, float* out);
+
+    // The ray-traced built-ins' rays (see SampledRays): fills `hits` and returns true, or
+    // returns false where there is no scene to trace (`gonio shade`, imagers); the default
+    // warns once that `what` gives 0 here.
+    virtual bool TraceSampledRays(const std::string& what, const SampledRays& rays,
+                                  SampledHits* hits);
+    // The points whose ray-traced results are computed: a point i >= MainPointCount() shares
+    // the result of point i % MainPointCount() (a ray tracer's neighbour points, which lie a
+    // pixel away, share their hit's rays as they share its lights).
+    virtual int MainPointCount() const { return n_; }
+    // The width of a pixel at current-space point P (the size "samplebase" jitters ray
+    // origins over); 0 where there are no pixels.
+    virtual float PixelWidth(const Imath::V3f& P) const {
+        (void)P;
+        return 0;
+    }
+
+    // Scratch that the ray-traced built-ins keep between calls in one shader run (each gather
+    // loop's samples, runtime/builtins_gather.cpp); theirs to define.
+    std::shared_ptr<RayBuiltinState>& RayState() { return rayState_; }
 
     // attribute(), option(), rendererinfo(): the value named `name` as `type` (floats or a
     // string); false if there is none of that type.
@@ -209,6 +259,7 @@ class ShadingContext {
     std::vector<uint64_t> randomState_;
 
   private:
+    std::shared_ptr<RayBuiltinState> rayState_;
     const std::string* statement_ = nullptr;
 };
 

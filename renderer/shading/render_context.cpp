@@ -128,6 +128,8 @@ void RenderContext::EvaluateLights(const float* P, const uint8_t* active,
         sl::ShaderGlobals globals;
         globals.n = n_;
         globals.Ps = lightP_;
+        if (light.instance->Master().IsAmbientLight())
+            ambientGlobals_.Set(*batch_, worldFromCurrent_, n_, lightP_, &globals);
         sl::LightResult result;
         shader_ = &sceneLights[index].light.shader;  // "shader" space is the light's
         lightExecutor_.RunLight(*light.instance, globals, *this, &result);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/raytrace/ray_scene.h"
+#include "renderer/shading/ambient_light_globals.h"
 #include "renderer/shading/frame_shaders.h"
 #include "renderer/shading/named_textures.h"
 #include "renderer/shading/surface_shading.h"
@@ -23,6 +24,8 @@ struct ShadingFiles;
 struct TracedRays {
     std::vector<V3f> org, dir;  // dir unit length
     std::vector<float> tnear;   // past the surface the ray leaves
+    std::vector<float>
+        tfar;  // empty, or per ray where it ends (the ray-traced built-ins' "maxdist")
     // Empty, or per ray the rays that the shader traced at the point's neighbour points: the
     // ray differentials of the traced ray.
     std::vector<NeighbourRays> neighbours;
@@ -94,6 +97,11 @@ class RenderContext : public sl::ShadingContext {
         return textures_.MeasuredBrdf(*this, count, name, wIn, wOut, active, out);
     }
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
+    // occlusion(), indirectdiffuse(), gather(), transmission(), visibility(): sampled_rays.cpp.
+    bool TraceSampledRays(const std::string& what, const sl::SampledRays& rays,
+                          sl::SampledHits* hits) override;
+    int MainPointCount() const override { return MainCount(); }
+    float PixelWidth(const Imath::V3f& P) const override;
     bool Attribute(const std::string& name, const sl::TypeSpec& type, int point,
                    std::vector<float>* floats, std::string* text) const override;
     bool Option(const std::string& name, const sl::TypeSpec& type, std::vector<float>* floats,
@@ -149,6 +157,7 @@ class RenderContext : public sl::ShadingContext {
     M44f worldFromCurrent_;
     sl::MessageShaders messageShaders_;
     bool captureLights_ = false;
+    AmbientLightGlobals ambientGlobals_;  // an ambient light's P, N, I (the surface's)
 };
 
 }  // namespace gonio

@@ -11,4 +11,15 @@ int TraceMaxDepth(const Frame& frame) {
     return std::max(0, it->second.GetInt("maxdepth", kDefaultTraceMaxDepth));
 }
 
+int TraceMaxDiffuseDepth(const Attributes& attributes) {
+    auto it = attributes.user.find("trace");
+    if (it == attributes.user.end()) return kDefaultTraceMaxDiffuseDepth;
+    return std::max(0, it->second.GetInt("maxdiffusedepth", kDefaultTraceMaxDiffuseDepth));
+}
+
+float TraceBias(const Attributes& attributes) {
+    auto it = attributes.user.find("trace");
+    return it == attributes.user.end() ? -1.f : it->second.GetFloat("bias", -1.f);
+}
+
 }  // namespace gonio

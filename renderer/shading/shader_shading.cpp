@@ -317,14 +317,13 @@ void DepthShader::ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk
     }
 }
 
-// The next hit along a traced ray past *tnear that faces the ray (or is two-sided), as camera
-// rays find theirs; *tnear moves past it.
+// The next hit along a traced ray past *tnear and before tfar that faces the ray (or is
+// two-sided), as camera rays find theirs; *tnear moves past it.
 bool NextHit(const RayScene& scene, const V3f& org, const V3f& dir, float time, float* tnear,
-             SurfacePoint* sp, float* t) {
+             float tfar, SurfacePoint* sp, float* t) {
     while (true) {
         RayHit hit;
-        if (!scene.Intersect(org, dir, *tnear, std::numeric_limits<float>::infinity(), time, &hit))
-            return false;
+        if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
         *tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
         scene.Evaluate(org, dir, hit, sp);
         *t = hit.t;
@@ -389,7 +388,10 @@ void ShaderWorker::TraceRays(int depth, const TracedRays& rays, float* colours) 
             if (!alive[r]) continue;
             const float start = tnear[r];
             float t;
-            if (!NextHit(scene_, rays.org[r], rays.dir[r], rays.time, &tnear[r],
+            const float tfar = rays.tfar.size() == size_t(count)
+                                   ? rays.tfar[r]
+                                   : std::numeric_limits<float>::infinity();
+            if (!NextHit(scene_, rays.org[r], rays.dir[r], rays.time, &tnear[r], tfar,
                          &points[hitRays.size()], &t)) {
                 alive[r] = 0;
                 continue;

@@ -13,7 +13,8 @@ namespace gonio::sl {
 namespace {
 
 constexpr unsigned kRunTimeOnly = kVaryingResult | kReadsGlobals | kUsesLights | kHasSideEffects |
-                                  kNeedsDerivatives | kReadsFiles | kTracesRays;
+                                  kNeedsDerivatives | kReadsFiles | kTracesRays | kSamplesRays |
+                                  kUsesSpaces;
 
 bool HasJumpTarget(Op op) {
     return op == Op::Jump || op == Op::If || op == Op::Else || op == Op::LoopTest ||
@@ -44,6 +45,13 @@ void Operands(const Program& p, const Instr& in, std::vector<int>* reads,
             if (code && std::isupper(static_cast<unsigned char>(code)))
                 writes->push_back(list[3 + k]);
             if (code) sig += sig[1] == '[' ? 3 : 1;
+            // An output option's variable follows its name (a string constant).
+            if (!code && k > 0 && (info.flags & kOutputOptions)) {
+                const Register& name = p.regs[list[3 + k - 1]];
+                if (name.isString && name.constant &&
+                    IsOutputOptionName(p.constStrings[size_t(name.constOffset)]))
+                    writes->push_back(list[3 + k]);
+            }
         }
         return;
     }

@@ -28,6 +28,7 @@ namespace gonio::sl { struct ParseState; }
 #include <memory>
 #include <type_traits>
 
+#include "shaderlang/compiler/gather_loop.h"
 #include "shaderlang/compiler/parse_state.h"
 
 #define YYLLOC_DEFAULT(Current, Rhs, N)            \
@@ -114,6 +115,19 @@ int LoopLevel(gonio::sl::ParseState* state, const gonio::sl::SourceLoc& loc, flo
         return 1;
     }
     return int(number);
+}
+
+// NAME(args) { ... }: only gather takes a statement after its arguments.
+Node* GatherStatement(gonio::sl::ParseState* state, const gonio::sl::SourceLoc& loc,
+                      std::string* name, Node* args, Node* hit, Node* miss) {
+    const bool gather = *name == "gather";
+    const std::string text = *name;
+    delete name;
+    if (!gather) {
+        state->Error(loc, "'" + text + "(...)' cannot be followed by a block (only gather() can)");
+        return nullptr;
+    }
+    return gonio::sl::MakeGatherLoop(state, loc, args, hit, miss);
 }
 
 void ApplyPrefix(Node* list, const Node* prefix) {
@@ -324,6 +338,10 @@ stmt
     | ILLUMINATE '(' arg_list ')' stmt {
           $$ = $3; $$->kind = NodeKind::Illuminate; $$->loc = @1; $$->kids.push_back($5);
       }
+    /* gather(...) { } [else stmt]: "gather" is no keyword (shaders name things gather), and a
+       block after a call's ')' cannot continue an expression, so this is unambiguous. */
+    | IDENT '(' args ')' block %prec LOWER_THAN_ELSE { $$ = GatherStatement(state, @1, $1, $3, $5, nullptr); }
+    | IDENT '(' args ')' block ELSE stmt { $$ = GatherStatement(state, @1, $1, $3, $5, $7); }
     | SOLAR '(' args ')' stmt {
           $$ = $3; $$->kind = NodeKind::Solar; $$->loc = @1; $$->kids.push_back($5);
       }

@@ -58,6 +58,7 @@ class TypeChecker {
     void CheckCall(Node* e, Context& ctx, const TypeSpec* expected);
     bool CheckUserCall(Node* e, const std::vector<Node*>& candidates);
     bool CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expected);
+    void CheckOutputOptions(Node* e, size_t first, Context& ctx);
     // Checks that `value` (already typed) may be stored in a `to`; types tuples to `to`.
     bool Coerce(Node* value, const TypeSpec& to, const std::string& what);
     bool CheckLvalue(Node* target, Context& ctx, bool varyingValue);

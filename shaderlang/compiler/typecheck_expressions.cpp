@@ -588,7 +588,23 @@ bool TypeChecker::CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expect
         }
         if (array) p += 2;
     }
+    if (info.flags & kOutputOptions) CheckOutputOptions(e, arg, ctx);
     return true;
+}
+
+// ("environmentcolor", c) among a call's options: c is a colour variable the call writes.
+void TypeChecker::CheckOutputOptions(Node* e, size_t first, Context& ctx) {
+    for (size_t a = first; a + 1 < e->kids.size(); ++a) {
+        const Node* name = e->kids[a];
+        if (name->kind != NodeKind::String || !IsOutputOptionName(name->name)) continue;
+        Node* target = e->kids[a + 1];
+        if (target->kind != NodeKind::Identifier || target->type.base != BaseType::Color) {
+            Error(target, "the value of option \"" + name->name + "\" of '" + e->name +
+                              "' is a color variable it writes");
+            continue;
+        }
+        CheckLvalue(target, ctx, true);
+    }
 }
 
 }  // namespace gonio::sl

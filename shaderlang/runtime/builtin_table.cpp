@@ -21,6 +21,8 @@ builtins::BuiltinList MakeTable() {
     builtins::AddMessageBuiltins(&list);
     builtins::AddDerivativeBuiltins(&list);
     builtins::AddBrdfBuiltins(&list);
+    builtins::AddRayBuiltins(&list);
+    builtins::AddGatherBuiltins(&list);
     return list;
 }
 

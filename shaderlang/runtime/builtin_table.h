@@ -8,6 +8,7 @@
 // writes. A trailing "*" accepts any further arguments of any type (printf, format, texture
 // options); "[]" after a code is an array argument of any length ("f[]").
 
+#include <string>
 #include <vector>
 
 #include "shaderlang/runtime/batch.h"
@@ -23,7 +24,20 @@ enum BuiltinFlags : unsigned {
     kNeedsDerivatives = 1u << 4,  // Du, Dv, Deriv, area, calculatenormal
     kReadsFiles = 1u << 5,        // brdf: reads files through the renderer, so runs only then
     kTracesRays = 1u << 6,        // trace: asks the renderer to trace rays
+    // occlusion, indirectdiffuse, gather, transmission, visibility: ask the renderer to trace
+    // sampled rays (ShadingContext::TraceSampledRays). Unlike trace()'s, their results are
+    // shared by a hit's neighbour points, so they need no ray differentials.
+    kSamplesRays = 1u << 7,
+    // occlusion: an option ("environmentcolor", c) writes its variable c (IsOutputOptionName).
+    kOutputOptions = 1u << 8,
+    // transform("space", ...) and the like: the renderer's coordinate systems, known only when
+    // the shader runs (so a constant operand is not folded with identity spaces).
+    kUsesSpaces = 1u << 9,
 };
+
+// The options whose value is an output variable (of colour type) in calls flagged
+// kOutputOptions.
+inline bool IsOutputOptionName(const std::string& name) { return name == "environmentcolor"; }
 
 struct BuiltinInfo {
     const char* name;

@@ -271,8 +271,10 @@ void TransformKernel(const BuiltinCall& call) {
 }
 
 void AddTransformRows(BuiltinList* list, const char* name, const char* t, BuiltinKernel kernel) {
+    // A named space is the renderer's: a constant point is transformed at run time, not folded.
     for (const char* prefix : {"s", "ss", "m", "sm"})
-        list->Add(name, t, prefix + std::string(t), kernel);
+        list->Add(name, t, prefix + std::string(t), kernel,
+                  prefix[0] == 's' ? kUsesSpaces : kBuiltinNone);
 }
 
 }  // namespace

@@ -128,6 +128,8 @@ void AddTextureBuiltins(BuiltinList* list);
 void AddMessageBuiltins(BuiltinList* list);
 void AddDerivativeBuiltins(BuiltinList* list);
 void AddBrdfBuiltins(BuiltinList* list);
+void AddRayBuiltins(BuiltinList* list);
+void AddGatherBuiltins(BuiltinList* list);
 
 // The point-like and numeric type codes many rows are generated over.
 inline const char* const kPointLikeCodes[] = {"p", "v", "n"};

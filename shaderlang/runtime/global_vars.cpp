@@ -14,9 +14,11 @@ constexpr unsigned kAll = kS | kL | kD | kV | kI;
 // name, type, varying, readers, writers
 const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"P", BaseType::Point, true, kAll, kD},
-    {"N", BaseType::Normal, true, kS | kL | kD, kS | kD},
+    // Light shaders may write N and read I, as Pixie's do (its arealight normalises N; its
+    // ambient lights run at the surface points and face N towards I).
+    {"N", BaseType::Normal, true, kS | kL | kD, kS | kL | kD},
     {"Ng", BaseType::Normal, true, kS | kL | kD, 0},
-    {"I", BaseType::Vector, true, kS | kD | kV, 0},
+    {"I", BaseType::Vector, true, kS | kL | kD | kV, 0},
     {"E", BaseType::Point, false, kAll, 0},
     {"dPdu", BaseType::Vector, true, kS | kL | kD, 0},
     {"dPdv", BaseType::Vector, true, kS | kL | kD, 0},

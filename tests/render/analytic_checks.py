@@ -497,16 +497,18 @@ def exit_2_on_bad_usage(ws):
     ws.run(["render", "x.rib", "--threads", "-1"], expect_code=2)
 
 
-def render_in_folder(gonio, folder, shaders, scene):
+def render_in_folder(gonio, folder, shaders, scene, args=()):
     """Writes the shaders (file name -> source) and `scene` as scene.rib into folder and renders
-    it there. Returns None, or a message saying how gonio failed or that it warned."""
+    it there (with the further command-line `args`). Returns None, or a message saying how gonio
+    failed or that it warned."""
     for name, text in shaders.items():
         with open(os.path.join(folder, name), "w") as f:
             f.write(text)
     path = os.path.join(folder, "scene.rib")
     with open(path, "w") as f:
         f.write(scene)
-    proc = subprocess.run([gonio, "render", path], cwd=folder, capture_output=True, text=True)
+    proc = subprocess.run([gonio, "render", path, *args], cwd=folder, capture_output=True,
+                          text=True)
     if proc.returncode != 0 or re.search(r"warning|error", proc.stderr):
         return f"gonio render failed or warned (exit {proc.returncode}):\n{proc.stderr}"
     return None
