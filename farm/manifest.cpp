@@ -21,7 +21,8 @@ json TaskToJson(const FarmTask& t) {
               {"name", t.name},
               {"output", t.output},
               {"args", t.args},
-              {"frame", t.frame}};
+              {"frame", t.frame},
+              {"retries", t.retries}};
     if (t.kind == TaskKind::kShard) j["paths"] = t.paths;
     return j;
 }
@@ -42,7 +43,6 @@ json ToJson(const FarmManifest& m) {
             {"scene", m.scene},
             {"gonio", m.gonio},
             {"chunk", m.chunk},
-            {"retries", m.retries},
             {"slurm",
              {{"partition", s.partition},
               {"account", s.account},
@@ -92,8 +92,7 @@ FarmManifest FromJson(const json& j) {
     m.scene = Field<std::string>(j, "scene", "the manifest");
     m.gonio = Field<std::string>(j, "gonio", "the manifest");
     m.chunk = Field<int>(j, "chunk", "the manifest");
-    m.retries = Field<int>(j, "retries", "the manifest");
-    if (m.chunk < 1 || m.retries < 0) throw FarmError("chunk must be >= 1 and retries >= 0");
+    if (m.chunk < 1) throw FarmError("chunk must be at least 1");
     const json slurm = Field<json>(j, "slurm", "the manifest");
     m.slurm.partition = Field<std::string>(slurm, "partition", "slurm");
     m.slurm.account = Field<std::string>(slurm, "account", "slurm");
@@ -111,6 +110,8 @@ FarmManifest FromJson(const json& j) {
         t.args = Field<std::vector<std::string>>(tasks[i], "args", where);
         t.frame = Field<int>(tasks[i], "frame", where);
         if (t.kind == TaskKind::kShard) t.paths = Field<uint64_t>(tasks[i], "paths", where);
+        t.retries = Field<int>(tasks[i], "retries", where);
+        if (t.retries < 0) throw FarmError(where + ": retries must be at least 0");
         if (t.output.empty() || t.args.empty()) throw FarmError(where + ": no output or no args");
         m.tasks.push_back(t);
     }

@@ -27,6 +27,7 @@ struct FarmTask {
     std::vector<std::string> args;  // gonio's arguments, without -o and --threads
     int frame = 0;                  // FrameBegin number
     uint64_t paths = 0;             // a shard: the paths its map's header must count
+    int retries = 2;                // attempts after the first, inside the task
 };
 
 // The shards of one BRDFLight frame, merged into one map (and optionally reduced to a grid).
@@ -55,7 +56,6 @@ struct FarmManifest {
     std::string scene;  // absolute
     std::string gonio;  // the executable that planned the job, absolute
     int chunk = 1;      // tasks per array task
-    int retries = 2;    // attempts after the first, inside each task
     SlurmSettings slurm;
     std::vector<FarmTask> tasks;
     std::vector<FarmMerge> merges;

@@ -26,10 +26,21 @@ std::string Extension(const std::string& fileName) {
     return ext.empty() ? ".tif" : ext;  // a Display without an extension writes TIFF
 }
 
-std::vector<std::string> RenderArgs(const PlanRequest& request, int frame) {
-    return {"render",   request.scene,
-            "--frames", std::to_string(frame),
-            "--seed",   std::to_string(request.seed)};
+// A task of `frame`: its name ("frame 3" and `what`), and the render of that frame with the
+// job's seed followed by `extra` arguments.
+FarmTask NewTask(const PlanRequest& request, TaskKind kind, int frame, const std::string& what,
+                 const std::string& output, const std::vector<std::string>& extra) {
+    FarmTask task;
+    task.kind = kind;
+    task.frame = frame;
+    task.name = "frame " + std::to_string(frame) + what;
+    task.output = output;
+    task.retries = request.retries;
+    task.args = {"render",   request.scene,
+                 "--frames", std::to_string(frame),
+                 "--seed",   std::to_string(request.seed)};
+    task.args.insert(task.args.end(), extra.begin(), extra.end());
+    return task;
 }
 
 void PlanShards(const PlanRequest& request, const SceneFrame& frame, FarmManifest* m) {
@@ -43,15 +54,10 @@ void PlanShards(const PlanRequest& request, const SceneFrame& frame, FarmManifes
     }
     const int n = request.photonShards;
     for (int s = 0; s < n; ++s) {
-        FarmTask task;
-        task.kind = TaskKind::kShard;
-        task.frame = frame.number;
-        task.name = "frame " + std::to_string(frame.number) + " shard " + std::to_string(s) + "/" +
-                    std::to_string(n);
-        task.output = "shards/" + stem + "_shard_" + Padded(s, 4) + ".pm";
-        task.args = RenderArgs(request, frame.number);
-        task.args.insert(task.args.end(),
-                         {"--photon-shard", std::to_string(s) + "/" + std::to_string(n)});
+        const std::string shard = std::to_string(s) + "/" + std::to_string(n);
+        FarmTask task =
+            NewTask(request, TaskKind::kShard, frame.number, " shard " + shard,
+                    "shards/" + stem + "_shard_" + Padded(s, 4) + ".pm", {"--photon-shard", shard});
         task.paths = ShardOf(frame.rays, s, n).count;  // as gonio render --photon-shard cuts
         merge.shards.push_back(int(m->tasks.size()));
         m->tasks.push_back(task);
@@ -73,15 +79,12 @@ void PlanTiles(const PlanRequest& request, const SceneFrame& frame, FarmManifest
     const int cols = request.tileColumns, rows = request.tileRows;
     for (int r = 0; r < rows; ++r) {
         for (int c = 0; c < cols; ++c) {
-            FarmTask task;
-            task.kind = TaskKind::kTile;
-            task.frame = frame.number;
-            task.name = "frame " + std::to_string(frame.number) + " tile " + std::to_string(c) +
-                        "," + std::to_string(r);
-            task.output = "tiles/" + stem + "_tile_" + Padded(r, 3) + "_" + Padded(c, 3) + ext;
-            task.args = RenderArgs(request, frame.number);
-            task.args.insert(task.args.end(), {"--crop", EdgeText(c, cols), EdgeText(c + 1, cols),
-                                               EdgeText(r, rows), EdgeText(r + 1, rows)});
+            const FarmTask task =
+                NewTask(request, TaskKind::kTile, frame.number,
+                        " tile " + std::to_string(c) + "," + std::to_string(r),
+                        "tiles/" + stem + "_tile_" + Padded(r, 3) + "_" + Padded(c, 3) + ext,
+                        {"--crop", EdgeText(c, cols), EdgeText(c + 1, cols), EdgeText(r, rows),
+                         EdgeText(r + 1, rows)});
             image.tiles.push_back(int(m->tasks.size()));
             m->tasks.push_back(task);
         }
@@ -90,13 +93,9 @@ void PlanTiles(const PlanRequest& request, const SceneFrame& frame, FarmManifest
 }
 
 void PlanFrame(const PlanRequest& request, const SceneFrame& frame, FarmManifest* m) {
-    FarmTask task;
-    task.kind = TaskKind::kFrame;
-    task.frame = frame.number;
-    task.name = "frame " + std::to_string(frame.number);
-    task.output = "images/frame_" + Padded(frame.number, 4) + Extension(frame.fileName);
-    task.args = RenderArgs(request, frame.number);
-    m->tasks.push_back(task);
+    m->tasks.push_back(
+        NewTask(request, TaskKind::kFrame, frame.number, "",
+                "images/frame_" + Padded(frame.number, 4) + Extension(frame.fileName), {}));
 }
 
 }  // namespace
@@ -110,7 +109,6 @@ FarmManifest PlanJob(const PlanRequest& request, const std::vector<SceneFrame>& 
     m.scene = request.scene;
     m.gonio = request.gonio;
     m.chunk = request.chunk;
-    m.retries = request.retries;
     m.slurm = request.slurm;
     const bool tiled = request.tileColumns * request.tileRows > 1;
     for (const SceneFrame& frame : frames) {

@@ -85,7 +85,7 @@ std::string RunFarmTask(const std::string& jobDir, const FarmManifest& m, int in
     fs::create_directories(fs::path(output).parent_path(), error);
     fs::create_directories(fs::path(TaskPidPath(jobDir, index)).parent_path(), error);
     std::string reason;
-    for (int attempt = 1; attempt <= 1 + m.retries; ++attempt) {
+    for (int attempt = 1; attempt <= 1 + task.retries; ++attempt) {
         ChildStatus status;
         reason = Attempt(jobDir, m, index, attempt, threads, &status);
         if (reason.empty()) {
@@ -94,7 +94,7 @@ std::string RunFarmTask(const std::string& jobDir, const FarmManifest& m, int in
             return "";
         }
         std::fprintf(log, "farm task %d (%s): attempt %d of %d failed: %s\n", index,
-                     task.name.c_str(), attempt, 1 + m.retries, reason.c_str());
+                     task.name.c_str(), attempt, 1 + task.retries, reason.c_str());
         std::fflush(log);
         if (status.started && status.signal == 0 && status.exitCode == 1) break;
     }

@@ -117,7 +117,6 @@ TEST(Manifest, RoundTripsEveryField) {
     const FarmManifest back = ReadManifest(dir);
     ASSERT_EQ(back.tasks.size(), 4u);
     EXPECT_EQ(back.ArrayTasks(), 2);
-    EXPECT_EQ(back.retries, 5);
     EXPECT_EQ(back.slurm.partition, "long");
     EXPECT_EQ(back.slurm.throttle, 7);
     for (size_t i = 0; i < m.tasks.size(); ++i) {
@@ -125,6 +124,7 @@ TEST(Manifest, RoundTripsEveryField) {
         EXPECT_EQ(back.tasks[i].output, m.tasks[i].output);
         EXPECT_EQ(back.tasks[i].paths, m.tasks[i].paths);
         EXPECT_EQ(back.tasks[i].kind, m.tasks[i].kind);
+        EXPECT_EQ(back.tasks[i].retries, 5);
     }
     EXPECT_EQ(back.tasks[3].kind, TaskKind::kFrame);
     EXPECT_EQ(back.merges[0].shards, m.merges[0].shards);
