@@ -70,6 +70,10 @@ void WriteSlurmScripts(const std::string& jobDir, const FarmManifest& m) {
 }
 
 SubmittedJobs SubmitToSlurm(const std::string& jobDir) {
+    if (!OnPath("sbatch"))
+        throw FarmError(
+            "gonio farm submit: sbatch is not on PATH (is this a Slurm submit "
+            "host?); --backend local runs the job on this machine");
     SubmittedJobs jobs;
     jobs.tasks = Sbatch({"sbatch", "--parsable", JobPath(jobDir, kTasksScript)});
     jobs.assemble = Sbatch({"sbatch", "--parsable", "--dependency=afterok:" + jobs.tasks,

@@ -24,6 +24,18 @@ std::string AttemptPath(const std::string& output, int attempt) {
         .string();
 }
 
+// The attempt's output and what a killed render leaves of its own temporary files, whose names
+// contain the attempt's (the image and photon map writers' temp + rename).
+void RemoveAttemptFiles(const std::string& attempt) {
+    const fs::path path(attempt);
+    const std::string name = path.filename().string();
+    std::error_code error;  // a folder that cannot be listed holds nothing to remove
+    for (const fs::directory_entry& entry : fs::directory_iterator(path.parent_path(), error)) {
+        if (entry.path().filename().string().find(name) != std::string::npos)
+            fs::remove(entry.path(), error);
+    }
+}
+
 std::vector<std::string> AttemptArgv(const FarmManifest& m, const FarmTask& task,
                                      const std::string& output, int threads) {
     std::vector<std::string> argv = {m.gonio};
@@ -46,7 +58,8 @@ std::string Attempt(const std::string& jobDir, const FarmManifest& m, int index,
         return error;
     }
     const std::string pidFile = TaskPidPath(jobDir, index);
-    WriteFileAtomically(pidFile, std::to_string(pid) + "\n");  // for people to look at only
+    WriteFileAtomically(pidFile,
+                        std::to_string(pid) + "\n");  // for people (and the tests) to look at
     *status = WaitProcess(pid);
     std::error_code ignored;  // a pid file left behind names a finished process: harmless
     fs::remove(pidFile, ignored);
@@ -54,7 +67,7 @@ std::string Attempt(const std::string& jobDir, const FarmManifest& m, int index,
     std::error_code renameError;
     if (reason.empty()) fs::rename(temporary, output, renameError);
     if (renameError) reason = "cannot rename it into place: " + renameError.message();
-    if (!reason.empty()) fs::remove(temporary, renameError);
+    if (!reason.empty()) RemoveAttemptFiles(temporary);
     return reason;
 }
 
