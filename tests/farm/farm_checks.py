@@ -306,6 +306,8 @@ def main():
     ap.add_argument("--backend", choices=["local", "slurm"], required=True)
     args = ap.parse_args()
     gonio = os.path.abspath(args.gonio)
+    # A SIGTERM (ctest, a person) unwinds through the cluster's `with`, which stops the daemons.
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
     work = tempfile.mkdtemp(prefix="gonio_farm_")
     start = time.time()
     try:

@@ -3,6 +3,7 @@ generated slurm.conf in a temporary folder (its own munge key, socket, pid and l
 and spool folders, free ports), no accounting. Used as a context manager; every daemon is
 stopped by its pid when the block ends, also on failure."""
 
+import ctypes
 import os
 import shutil
 import signal
@@ -16,6 +17,13 @@ NODE = "gonio0"
 
 def missing_binaries():
     return [b for b in BINARIES if shutil.which(b) is None]
+
+
+def die_with_parent():
+    """In a daemon's child process before exec: SIGTERM when the test itself dies, even by
+    SIGKILL (a ctest timeout), so that no daemon outlives it."""
+    PR_SET_PDEATHSIG = 1
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
 
 
 def free_port():
@@ -92,7 +100,8 @@ class SlurmCluster:
 
     def start(self, name, argv):
         log = open(self.path(name + ".out"), "w")
-        proc = subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=self.env)
+        proc = subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=self.env,
+                                preexec_fn=die_with_parent)
         self.procs.append((name, proc))
         return proc
 
