@@ -11,6 +11,7 @@
 #include "brdfsim/brdf_grid.h"
 #include "brdfsim/grd_file.h"
 #include "brdfsim/photon_map.h"
+#include "brdfsim/photon_map_merge.h"
 #include "brdfsim/synth.h"
 
 namespace gonio::brdfcli {
@@ -57,36 +58,7 @@ void AddMerge(CLI::App& brdf, int* exitCode) {
     cmd->add_option("-o,--output", *out, "output photon map (.pm)")->required();
     cmd->callback([=] {
         *exitCode = RunGuarded("merge", [&] {
-            PhotonMapHeader total;
-            for (const std::string& path : *inputs) {
-                const PhotonMapHeader header = ReadPhotonMapHeader(path);
-                total.count += header.count;
-                total.paths += header.paths;
-            }
-            std::unique_ptr<PhotonMapWriter> writer;
-            int ncomps = 0;
-            for (const std::string& path : *inputs) {
-                PhotonMapReader reader(path);
-                std::vector<float> rows;
-                bool more = true;
-                while (more) {
-                    rows.clear();
-                    more = reader.ReadBatch(1 << 18, rows);
-                    if (rows.empty()) continue;
-                    if (!writer) {
-                        ncomps = reader.NumComponents();
-                        writer = std::make_unique<PhotonMapWriter>(*out, total, ncomps);
-                    } else if (reader.NumComponents() != ncomps) {
-                        throw PhotonMapError(path + ": " + std::to_string(reader.NumComponents()) +
-                                             " colour values per photon, the maps before have " +
-                                             std::to_string(ncomps));
-                    }
-                    const int stride = kFirstColour + ncomps;
-                    for (std::size_t i = 0; i < rows.size(); i += stride) writer->Append(&rows[i]);
-                }
-            }
-            if (!writer) throw PhotonMapError("the photon maps hold no photons");
-            writer->Close();
+            const PhotonMapHeader total = MergePhotonMaps(*inputs, *out);
             std::printf("%s: %llu photons of %llu paths from %zu maps\n", out->c_str(),
                         static_cast<unsigned long long>(total.count),
                         static_cast<unsigned long long>(total.paths), inputs->size());

@@ -14,5 +14,6 @@ void AddShaderCommand(CLI::App& app, int* exitCode);
 void AddShadeCommand(CLI::App& app, int* exitCode);
 void AddSpectralCommand(CLI::App& app, int* exitCode);
 void AddViewCommand(CLI::App& app, int* exitCode);
+void AddFarmCommand(CLI::App& app, int* exitCode);
 
 }  // namespace gonio

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     gonio::AddShadeCommand(app, &exitCode);
     gonio::AddSpectralCommand(app, &exitCode);
     gonio::AddViewCommand(app, &exitCode);
+    gonio::AddFarmCommand(app, &exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

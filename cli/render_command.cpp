@@ -1,4 +1,5 @@
 // gonio render SCENE.rib [-o OUT] [--threads N] [--seed S] [--progress] [--stats] [--strict]
+//                        [--frames A-B] [--crop X0 X1 Y0 Y1] [--photon-shard I/N]
 
 #include <tbb/global_control.h>
 
@@ -7,6 +8,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "frame_range.h"
 #include "renderer/frame/frame_renderer.h"
 #include "renderer/photon/photon_frame.h"
 #include "renderer/rib/rib_parser.h"
@@ -24,7 +26,38 @@ struct RenderOptions {
     bool progress = false;
     bool stats = false;
     bool strict = false;
+    std::string frames;  // "A-B": render only these FrameBegin numbers
+    std::vector<float> crop;
+    std::string photonShard;  // "I/N"
 };
+
+// "I/N" with 0 <= I < N into the settings; the reason on failure, "" on success.
+std::string ParsePhotonShard(const std::string& text, RenderSettings* settings) {
+    unsigned long long shard = 0, shards = 0;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%llu/%llu%c", &shard, &shards, &rest) != 2 || shards == 0 ||
+        shard >= shards || text.find('-') != std::string::npos)
+        return "--photon-shard expects I/N with 0 <= I < N, got '" + text + "'";
+    settings->photonShard = shard;
+    settings->photonShards = shards;
+    return "";
+}
+
+// The command-line settings beyond the seed and output; the reason on failure, "" on success.
+std::string ReadSettings(const RenderOptions& options, RenderSettings* settings,
+                         FrameRange* frames) {
+    if (!options.frames.empty()) {
+        const std::string error = ParseFrameRange(options.frames, frames);
+        if (!error.empty()) return "--frames: " + error;
+    }
+    if (!options.crop.empty()) {
+        const std::vector<float>& c = options.crop;
+        if (!(0 <= c[0] && c[0] < c[1] && c[1] <= 1 && 0 <= c[2] && c[2] < c[3] && c[3] <= 1))
+            return "--crop expects X0 X1 Y0 Y1 with 0 <= X0 < X1 <= 1 and 0 <= Y0 < Y1 <= 1";
+        std::copy(c.begin(), c.end(), settings->crop);
+    }
+    return options.photonShard.empty() ? "" : ParsePhotonShard(options.photonShard, settings);
+}
 
 void PrintStats(const Frame& frame, const RenderStats& stats) {
     std::fprintf(stderr,
@@ -61,11 +94,20 @@ int RunRender(const RenderOptions& options) {
 
     Diagnostics diagnostics;
     RenderSettings settings;
+    FrameRange frames;
+    const std::string error = ReadSettings(options, &settings, &frames);
+    if (!error.empty()) {
+        std::fprintf(stderr, "gonio render: %s\n", error.c_str());
+        return 2;
+    }
     settings.seed = options.seed;
     settings.progress = options.progress;
     settings.outputOverride = options.output;
     bool outputFailed = false;
+    int rendered = 0;
     auto renderFrame = [&](const Frame& frame) {
+        if (!frames.Contains(frame.number)) return;
+        ++rendered;
         const bool abort = options.strict || frame.options.errorHandler == "abort";
         if (diagnostics.ErrorCount() > 0 && abort) {
             std::fprintf(stderr,
@@ -84,6 +126,11 @@ int RunRender(const RenderOptions& options) {
     };
     BuildScene(options.scene, ReaderOf(options.scene, diagnostics), diagnostics, renderFrame);
     if (outputFailed) return 2;
+    if (frames.Given() && rendered == 0 && diagnostics.ErrorCount() == 0) {
+        std::fprintf(stderr, "gonio render: the scene has no frame in --frames %s\n",
+                     options.frames.c_str());
+        return 2;
+    }
     return diagnostics.ErrorCount() > 0 ? 1 : 0;
 }
 
@@ -103,6 +150,15 @@ void AddRenderCommand(CLI::App& app, int* exitCode) {
     cmd->add_flag("--strict", options->strict,
                   "Render no frame after an error (as ErrorHandler \"abort\"); by default bad "
                   "requests are reported, skipped, and rendering goes on");
+    cmd->add_option("--frames", options->frames,
+                    "Render only the frames A-B (FrameBegin numbers, inclusive) or A");
+    cmd->add_option("--crop", options->crop,
+                    "Render only this part X0 X1 Y0 Y1 of the scene's CropWindow (fractions of "
+                    "it); tiles that share edges join into the whole image exactly")
+        ->expected(4);
+    cmd->add_option("--photon-shard", options->photonShard,
+                    "BRDFLight: trace only shard I/N of the paths; the N maps merged in order "
+                    "equal the unsplit map");
     cmd->callback([options, exitCode] { *exitCode = RunRender(*options); });
 }
 

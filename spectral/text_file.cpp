@@ -1,12 +1,11 @@
 #include "spectral/text_file.h"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 
+#include "base/atomic_file.h"
 #include "spectral/spectral_error.h"
 
 namespace gonio::spectral {
@@ -36,23 +35,8 @@ std::vector<std::string> ReadTextLines(const std::string& path) {
 }
 
 void WriteTextFileAtomically(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) FailAt(path, 0, std::string("cannot write it: ") + std::strerror(errno));
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    const int writeErrno = errno;
-    const bool flushed = std::fflush(file) == 0;
-    const bool closed = std::fclose(file) == 0;
-    if (!written || !flushed || !closed) {
-        std::remove(temporary.c_str());
-        FailAt(path, 0,
-               std::string("cannot write it: ") + std::strerror(written ? errno : writeErrno));
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const int renameErrno = errno;
-        std::remove(temporary.c_str());
-        FailAt(path, 0, std::string("cannot write it: ") + std::strerror(renameErrno));
-    }
+    const std::string error = WriteFileAtomically(path, text);
+    if (!error.empty()) FailAt(path, 0, "cannot write it: " + error);
 }
 
 }  // namespace gonio::spectral

@@ -480,9 +480,11 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const std::unique_ptr<SurfaceShading> shading =
         MakeShaderShading(frame, scene, camera, diagnostics);
     const std::vector<ShaderOutput> outputs = OutputsOfDisplays(displays, *shading, &channelNames);
-    const FilmSpec spec = FilmSpec::FromCropWindow(
-        options.xres, options.yres, options.cropWindow[0], options.cropWindow[1],
-        options.cropWindow[2], options.cropWindow[3], xsamples, ysamples, int(channelNames.size()));
+    float crop[4];
+    ComposeCropWindow(options.cropWindow, settings.crop, crop);
+    const FilmSpec spec =
+        FilmSpec::FromCropWindow(options.xres, options.yres, crop[0], crop[1], crop[2], crop[3],
+                                 xsamples, ysamples, int(channelNames.size()));
     const PixelFilter filter = MakeFilter(options, diagnostics);
     if (!FilmFitsInMemory(spec, filter, options, diagnostics)) return true;
     Film film(spec, filter, kTileSize);

@@ -23,6 +23,14 @@ constexpr float kCancelledWeightFraction = 1e-3f;
 
 }  // namespace
 
+void ComposeCropWindow(const float window[4], const float part[4], float out[4]) {
+    for (int i = 0; i < 4; ++i) {
+        const float lo = window[i & 2], hi = window[(i & 2) + 1];
+        // The whole window's own edges stay exact (no rounding of lo + 1 * (hi - lo)).
+        out[i] = part[i] == 0 ? lo : part[i] == 1 ? hi : lo + part[i] * (hi - lo);
+    }
+}
+
 FilmSpec FilmSpec::FromCropWindow(int xres, int yres, float cropXmin, float cropXmax,
                                   float cropYmin, float cropYmax, int xsamples, int ysamples,
                                   int channels) {

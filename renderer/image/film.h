@@ -56,6 +56,12 @@ struct FilmSpec {
     int SamplesPerPixel() const { return xsamples * ysamples; }
 };
 
+// The window `part` (xmin xmax ymin ymax, as fractions of `window`) of the crop window `window`
+// (NDC), in NDC: a tile of a scene that has a CropWindow of its own. Two parts that share an
+// edge value share the composed edge value too (the same arithmetic on the same numbers), so
+// tiles cover the window without a gap or an overlap (see FromCropWindow).
+void ComposeCropWindow(const float window[4], const float part[4], float out[4]);
+
 // A resolved image: the crop window of the frame, row-major from the top, channels interleaved.
 struct Image {
     int width = 0, height = 0;

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "base/math.h"
+#include "base/shard_range.h"
 #include "base/system_memory.h"
 #include "brdfsim/photon_map.h"
 #include "renderer/raytrace/ray_scene.h"
@@ -47,15 +48,14 @@ bool WriteMap(const std::string& path, const PhotonTraceResult& result, const Fi
 }
 
 // A located error, instead of std::bad_alloc, for more photon paths than this machine holds.
-bool PhotonsFitInMemory(const Frame& frame, const BrdfLightOptions& options,
+bool PhotonsFitInMemory(const Frame& frame, const BrdfLightOptions& options, uint64_t paths,
                         Diagnostics& diagnostics) {
-    const double needed = PhotonTraceBytes(uint64_t(options.rays), frame.options.colorComponents);
+    const double needed = PhotonTraceBytes(paths, frame.options.colorComponents);
     const double memory = PhysicalMemoryBytes();
     if (memory == 0 || needed <= memory) return true;
     diagnostics.Error(options.loc,
-                      "BRDFLight: " + std::to_string(uint64_t(options.rays)) +
-                          " photon paths need " + ByteSize(needed) + ", more than the " +
-                          ByteSize(memory) +
+                      "BRDFLight: " + std::to_string(paths) + " photon paths need " +
+                          ByteSize(needed) + ", more than the " + ByteSize(memory) +
                           " of this machine's memory: trace fewer, with different seeds, and "
                           "merge the maps (gonio brdf merge)");
     return false;
@@ -101,12 +101,17 @@ bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagno
     }
     if (!CheckWritable(output, options.loc, diagnostics)) return false;
     // A scene error (exit 1), not an output one: reported, nothing traced.
-    if (!PhotonsFitInMemory(frame, options, diagnostics)) return true;
+    // Each path's random numbers depend on the seed and its index only (photon_tracer.h), so
+    // the shards' maps, merged in shard order, are the unsplit run's map row for row.
+    const ShardRange shard =
+        ShardOf(uint64_t(options.rays), settings.photonShard, settings.photonShards);
+    if (!PhotonsFitInMemory(frame, options, shard.count, diagnostics)) return true;
 
     const RayScene scene(frame, diagnostics, RayScene::Traversal::kFast);
     const MicroBrdfTable brdfs = BuildMicroBrdfTable(frame, diagnostics);
     PhotonTraceSettings trace;
-    trace.paths = static_cast<uint64_t>(options.rays);
+    trace.paths = shard.count;
+    trace.firstPath = shard.first;
     trace.area = options.area;
     trace.isotropic = options.isotropic;
     trace.averageAzimuth = options.averageAzimuth;

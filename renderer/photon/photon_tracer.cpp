@@ -305,7 +305,7 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
         batch.rows = result.rows.data() + b * kBatch * stride;
         PathTracer tracer(c, batch);
         const uint64_t first = b * kBatch, last = std::min(settings.paths, first + kBatch);
-        for (uint64_t path = first; path < last; ++path) tracer.Trace(path);
+        for (uint64_t path = first; path < last; ++path) tracer.Trace(settings.firstPath + path);
         batches[b] = std::move(batch);
         progress.Advance(last - first);
     });

@@ -20,6 +20,11 @@ namespace gonio {
 
 struct PhotonTraceSettings {
     uint64_t paths = 100000;
+    // The index of the first path: a run traces paths [firstPath, firstPath + paths). Each
+    // path's random numbers depend only on the seed and its index, so runs over adjacent
+    // ranges (the shards of a farm job) never share a path, and their maps joined in order
+    // are the rows of one run over the whole range.
+    uint64_t firstPath = 0;
     float area = 0.1f;
     bool isotropic = false;
     // For isotropic runs: draw the light's azimuth uniformly and store every photon turned by

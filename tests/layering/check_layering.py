@@ -20,7 +20,7 @@ import sys
 FOLDERS = [
     "base", "renderer/rib", "renderer/geometry", "renderer/scene", "renderer/raytrace",
     "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "shaderlang",
-    "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "cli",
+    "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "farm", "cli",
 ]
 # External libraries only some folders may see: the build keeps them private to those.
 GUARDED = ["embree3", "OpenImageIO", "OpenEXR", "tiffio.h", "png.h", "Eigen", "httplib.h",
