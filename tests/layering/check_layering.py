@@ -19,7 +19,8 @@ import sys
 # The library folders, most specific first, so that renderer/scene/x.h belongs to renderer/scene.
 FOLDERS = [
     "base", "renderer/rib", "renderer/geometry", "renderer/scene", "renderer/raytrace",
-    "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "shaderlang",
+    "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "renderer/pathtrace",
+    "shaderlang",
     "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "cli",
 ]
 # External libraries only some folders may see: the build keeps them private to those.
