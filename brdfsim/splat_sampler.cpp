@@ -39,66 +39,76 @@ void Frame(const Imath::V3d& c, Imath::V3d* t, Imath::V3d* s) {
 }  // namespace
 
 SplatSampler::SplatSampler(std::shared_ptr<const SplatSet> splats, const Brdf& exact)
-    : splats_(std::move(splats)),
-      exact_(exact),
-      marginal_(splats_->Params().radius, splats_->Params().norm) {
+    : splats_(std::move(splats)), exact_(exact) {
     const SplatSet& s = *splats_;
+    const SplatParams& p = s.params;
     if (s.Size() >= (std::size_t{1} << 32)) {
         throw std::invalid_argument("too many splats to sample (2^32 or more)");
     }
-    meanWeight_.resize(s.Size());
-    for (std::size_t k = 0; k < s.Size(); ++k) {
-        double sum = 0.0;
-        for (int c = 0; c < s.ncomps; ++c) sum += s.weights[k * s.ncomps + c];
-        meanWeight_[k] = static_cast<float>(sum / s.ncomps);
+    inLimit_ = static_cast<float>(p.isotropic ? p.radius : 2.0 * std::sin(0.5 * p.radius));
+    chordLimit2_ = inLimit_ * inLimit_;
+    const KernelOutMarginalTable marginal(p.radius, p.norm);
+    marginal_.resize(kMarginalSteps + 1);
+    for (int i = 0; i <= kMarginalSteps; ++i) {
+        const double in = double(inLimit_) * i / kMarginalSteps;
+        marginal_[i] = marginal(p.isotropic ? in : 2.0 * std::asin(0.5 * in));
     }
-    order_.resize(s.Size());
-    std::iota(order_.begin(), order_.end(), 0u);
-    if (s.params.isotropic) {
-        std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    std::vector<std::uint32_t> order(s.Size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (p.isotropic) {
+        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
             return s.geometry[a].thetaIn < s.geometry[b].thetaIn;
         });
-        sortedTheta_.reserve(s.Size());
-        for (std::uint32_t k : order_) sortedTheta_.push_back(s.geometry[k].thetaIn);
-        return;
+    } else {
+        // A counting sort by cell: cellStart_[c] .. cellStart_[c + 1] are cell c's splats.
+        cellStart_.assign(kBands * kSectors + 1, 0);
+        for (const SplatGeometry& g : s.geometry) ++cellStart_[CellOf(g) + 1];
+        std::partial_sum(cellStart_.begin(), cellStart_.end(), cellStart_.begin());
+        std::vector<std::uint32_t> next(cellStart_.begin(), cellStart_.end() - 1);
+        for (std::uint32_t k = 0; k < s.Size(); ++k) order[next[CellOf(s.geometry[k])]++] = k;
     }
-    // A counting sort by cell: cellStart_[c] .. cellStart_[c + 1] are cell c's splats.
-    cellStart_.assign(kBands * kSectors + 1, 0);
-    for (const SplatGeometry& g : s.geometry) ++cellStart_[CellOf(g) + 1];
-    std::partial_sum(cellStart_.begin(), cellStart_.end(), cellStart_.begin());
-    std::vector<std::uint32_t> next(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::uint32_t k = 0; k < s.Size(); ++k) order_[next[CellOf(s.geometry[k])]++] = k;
+    sorted_.reserve(s.Size());
+    for (std::uint32_t k : order) {
+        double sum = 0.0;
+        for (int c = 0; c < s.ncomps; ++c) sum += s.weights[k * s.ncomps + c];
+        const SplatGeometry& g = s.geometry[k];
+        const float x = p.isotropic ? g.thetaIn : g.inX;
+        sorted_.push_back({x, g.inY, g.inZ, static_cast<float>(sum / s.ncomps), k});
+    }
 }
 
-void SplatSampler::AddTerm(std::uint32_t k, std::uint32_t image, double dIn,
-                           SplatMixture* mixture) const {
-    const double weight = meanWeight_[k] * marginal_(dIn);
-    if (!(weight > 0.0)) return;
-    mixture->terms.push_back({k, image, dIn});
-    mixture->cumulative.push_back(mixture->Total() + weight);
+double SplatSampler::Marginal(float in) const {
+    const float u = in / inLimit_ * kMarginalSteps;
+    const int i = std::min(static_cast<int>(u), kMarginalSteps - 1);
+    return marginal_[i] + (u - i) * (marginal_[i + 1] - marginal_[i]);
+}
+
+double SplatSampler::IncomingDistance(const SplatMixture::Term& term) const {
+    return splats_->params.isotropic ? term.in : 2.0 * std::asin(0.5 * double(term.in));
 }
 
 void SplatSampler::GatherAnisotropic(const Imath::V3f& query, std::uint32_t image,
                                      SplatMixture* mixture) const {
-    const SplatSet& s = *splats_;
-    const double radius = s.params.radius, sinR = std::sin(radius);
-    const double chordRadius2 = std::pow(2.0 * std::sin(0.5 * radius), 2);
-    const Imath::V3d q(query.x, query.y, query.z);
-    const double theta = std::acos(std::clamp(q.z, -1.0, 1.0));
-    const double phi = std::atan2(q.y, q.x);
+    const double radius = splats_->params.radius, sinR = std::sin(radius);
+    const double theta = std::acos(std::clamp<double>(query.z, -1.0, 1.0));
+    const double phi = std::atan2(query.y, query.x);
     if (theta - radius >= kPi / 2) return;
     const int bandLo = std::max(0, static_cast<int>((theta - radius) / kBandWidth));
     const int bandHi = std::min(kBands - 1, static_cast<int>((theta + radius) / kBandWidth));
     // A cap around a pole holds every φ'; elsewhere a centre at colatitude θ within R of the
     // query differs from it by |Δφ| <= asin(sin R / sin θ) (spherical law of sines).
     const bool aroundPole = theta < radius || theta > kPi - radius;
+    double total = mixture->Total();
     auto visit = [&](int cell) {
         for (std::uint32_t i = cellStart_[cell]; i < cellStart_[cell + 1]; ++i) {
-            const std::uint32_t k = order_[i];
-            const SplatGeometry& g = s.geometry[k];
-            const double chord2 = (q - Imath::V3d(g.inX, g.inY, g.inZ)).length2();
-            if (chord2 < chordRadius2)
-                AddTerm(k, image, 2.0 * std::asin(0.5 * std::sqrt(chord2)), mixture);
+            const Sorted& e = sorted_[i];
+            const float chord2 = Chord2(query.x - e.x, query.y - e.y, query.z - e.z);
+            if (chord2 >= chordLimit2_) continue;
+            const float chord = std::sqrt(chord2);
+            const double weight = e.meanWeight * Marginal(chord);
+            if (!(weight > 0.0)) continue;
+            total += weight;
+            mixture->terms.push_back({e.splat, image, chord, total});
         }
     };
     for (int band = bandLo; band <= bandHi; ++band) {
@@ -117,17 +127,22 @@ void SplatSampler::GatherAnisotropic(const Imath::V3f& query, std::uint32_t imag
 }
 
 void SplatSampler::GatherIsotropic(double theta, std::uint32_t image, SplatMixture* mixture) const {
-    const double radius = splats_->params.radius;
-    auto lo = std::lower_bound(sortedTheta_.begin(), sortedTheta_.end(), theta - radius);
-    for (auto it = lo; it != sortedTheta_.end() && *it < theta + radius; ++it) {
-        AddTerm(order_[it - sortedTheta_.begin()], image, std::abs(theta - *it), mixture);
+    const float t = static_cast<float>(theta);
+    auto lo = std::lower_bound(sorted_.begin(), sorted_.end(), t - inLimit_,
+                               [](const Sorted& e, float value) { return e.x < value; });
+    double total = mixture->Total();
+    for (auto it = lo; it != sorted_.end() && it->x < t + inLimit_; ++it) {
+        const float offset = std::abs(t - it->x);
+        const double weight = it->meanWeight * Marginal(offset);
+        if (!(weight > 0.0)) continue;
+        total += weight;
+        mixture->terms.push_back({it->splat, image, offset, total});
     }
 }
 
 void SplatSampler::Prepare(const Imath::V3f& wIn, SplatMixture* mixture) const {
     mixture->wIn = wIn;
     mixture->terms.clear();
-    mixture->cumulative.clear();
     if (!(wIn.z > 0)) return;
     const SplatParams& p = splats_->params;
     const bool reflect = p.horizon == Horizon::kReflect;
@@ -156,15 +171,16 @@ bool SplatSampler::Sample(const SplatMixture& mixture, float u, std::uint64_t se
                           Imath::V3f* wOut) const {
     const double total = mixture.Total();
     if (!(total > 0.0)) return false;
-    const auto pick = std::upper_bound(mixture.cumulative.begin(), mixture.cumulative.end(),
-                                       static_cast<double>(u) * total);
+    const auto pick = std::upper_bound(
+        mixture.terms.begin(), mixture.terms.end(), static_cast<double>(u) * total,
+        [](double value, const SplatMixture::Term& t) { return value < t.cumulative; });
     const std::size_t i =
-        std::min<std::size_t>(pick - mixture.cumulative.begin(), mixture.terms.size() - 1);
+        std::min<std::size_t>(pick - mixture.terms.begin(), mixture.terms.size() - 1);
     const SplatMixture::Term& term = mixture.terms[i];
     const SplatParams& p = splats_->params;
     // ω at distance b from the centre: density ∝ K(‖a, b‖ / R) on the sphere, by rejection
     // from the uniform cap b <= bMax; K is largest, K(a / R), at b = 0.
-    const double a = term.dIn;
+    const double a = IncomingDistance(term);
     const double cosMax = std::cos(KernelSupportLimit(p.norm, p.radius, a));
     const double kMax = SplatKernel(a / p.radius);
     std::uint64_t state = seed;

@@ -32,12 +32,12 @@ struct SplatMixture {
     struct Term {
         std::uint32_t splat;
         std::uint32_t image;  // a: 0 the query itself, 1 and 2 its images (splat_set.h)
-        double dIn;           // distance on the incoming side
+        float in;             // the incoming chord (isotropic sets: |θ' offset|)
+        double cumulative;    // Σ W over the terms up to this one
     };
     Imath::V3f wIn;
     std::vector<Term> terms;
-    std::vector<double> cumulative;  // Σ W over terms[0..i]
-    double Total() const { return cumulative.empty() ? 0.0 : cumulative.back(); }
+    double Total() const { return terms.empty() ? 0.0 : terms.back().cumulative; }
 };
 
 class SplatSampler {
@@ -60,18 +60,29 @@ class SplatSampler {
     void GatherAnisotropic(const Imath::V3f& query, std::uint32_t image,
                            SplatMixture* mixture) const;
     void GatherIsotropic(double theta, std::uint32_t image, SplatMixture* mixture) const;
-    void AddTerm(std::uint32_t k, std::uint32_t image, double dIn, SplatMixture* mixture) const;
+    // The incoming distance of a term: the great circle of its chord, or the θ' offset.
+    double IncomingDistance(const SplatMixture::Term& term) const;
     Imath::V3d OutCentre(const SplatMixture::Term& term) const;
+    // M at an incoming chord (isotropic sets: at a θ' offset), linearly interpolated from
+    // kMarginalSteps + 1 values: the gather loop takes no asin per splat.
+    double Marginal(float in) const;
 
+    static constexpr int kMarginalSteps = 1024;
     std::shared_ptr<const SplatSet> splats_;
     const Brdf& exact_;
-    KernelOutMarginalTable marginal_;
-    std::vector<float> meanWeight_;  // w̄_k
+    std::vector<double> marginal_;
+    float inLimit_;      // the largest incoming chord (θ' offset) a splat reaches: 2 sin(R/2) (R)
+    float chordLimit2_;  // (2 sin(R/2))²
     // Splats by where their incoming centre lies: anisotropic sets in (θ', φ') cells, isotropic
-    // ones by θ'. order_ holds splat indices, cellStart_ each cell's first position.
-    std::vector<std::uint32_t> order_;
+    // ones by θ', and per position in that order the splat's index, incoming centre (x, y, z,
+    // or θ' in x) and w̄_k, its weight averaged over colour components: the gather loop reads
+    // them in sequence. cellStart_ is each cell's first position (anisotropic sets).
+    struct Sorted {
+        float x, y, z, meanWeight;
+        std::uint32_t splat;
+    };
+    std::vector<Sorted> sorted_;
     std::vector<std::uint32_t> cellStart_;
-    std::vector<float> sortedTheta_;  // isotropic: θ' of order_[i]
 };
 
 }  // namespace gonio

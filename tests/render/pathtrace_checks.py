@@ -11,16 +11,16 @@
   mean (σ ≈ 0.2%, computed and printed from the pixels), and maxdepth 200 leaves a bias of
   ρ^200 < 1e-19;
 * the same furnace lined with a splat BRDF: brdfsurface with a .grd of a synthetic kd = 1
-  Lambert map and Kb = 0.5, sampled from its splats (brdfsim/splat_sampler.h): L = 1 within the
-  estimate's own noise plus 2% for the splat estimate (its first bounce is f at one pair of
-  directions, which a 200 000-photon map reconstructs to about 1%);
+  Lambert map and Kb = 0.5, sampled from its splats (brdfsim/splat_sampler.h): L = Kb π f(0→0) /
+  (1 - Kb a(0)) with the grid's own f and albedo a (`gonio brdf eval`, `info`; within 2% of 1),
+  within 4σ of the paths' noise (σ ≈ 0.4% at 32 × 32 pixels × 16 paths) plus 0.2%;
 * determinism: a Cornell-like box with diffuse and glossy walls renders to the same pixels with
   1 and 2 threads.
 
     pathtrace_checks.py --gonio build/bin/gonio"""
 
 import math
-import os
+import re
 import sys
 
 from analytic_checks import expect, read_images, workspace_main
@@ -28,9 +28,9 @@ from analytic_checks import expect, read_images, workspace_main
 SIZE, SAMPLES = 64, 4  # 64 × 64 pixels, 4 × 4 paths each
 
 
-def furnace(name, surface, options=""):
+def furnace(name, surface, options="", size=SIZE):
     return (f'Option "pathtrace" "integer enable" [1] "integer maxdepth" [200] {options}\n'
-            f"Format {SIZE} {SIZE} 1\nPixelSamples {SAMPLES} {SAMPLES}\n"
+            f"Format {size} {size} 1\nPixelSamples {SAMPLES} {SAMPLES}\n"
             'PixelFilter "box" 1 1\nProjection "perspective" "fov" [90]\n'
             f'Quantize "rgba" 0 0 0 0\nDisplay "{name}.tif" "tiff" "rgba"\n'
             'WorldBegin\nLightSource "pointlight" 1 "from" [0 0 0] "intensity" [3.14159265]\n'
@@ -47,8 +47,8 @@ def mean_and_error(image):
     return mean, math.sqrt(variance / n)
 
 
-def check_furnace(ws, name, surface, expected, tolerance, options=""):
-    ws.render(furnace(name, surface, options), name)
+def check_furnace(ws, name, surface, expected, tolerance, options="", size=SIZE):
+    ws.render(furnace(name, surface, options, size), name)
     (image,) = read_images(ws.path(name + ".tif"))
     mean, error = mean_and_error(image)
     print(f"     {name}: {mean:.5f} ± {error:.5f} (expected {expected})")
@@ -73,8 +73,23 @@ def furnace_rho_08(ws):
 def splat_furnace(ws):
     ws.run(["brdf", "synth", "lambert:1", "-n", "200000", "--stratified", "-o", "white.pm"])
     ws.run(["brdf", "opt", "4", "9", "0.3", "0", "white.pm", "white.grd"])
-    check_furnace(ws, "splatfurnace",
-                  'Surface "brdfsurface" "string grid" "white.grd" "float Kb" [0.5]', 1.0, 0.02)
+    # What this grid predicts: the first bounce Kb·f(0→0)·E₀ (E₀ = π), then each bounce Kb·a
+    # with a its albedo at normal incidence (to second order in f's ±3% ripple over the wall's
+    # directions, 0.1%).
+    f0 = float(ws.run(["brdf", "eval", "--grid", "white.grd", "0", "0", "0", "0"]).stdout.split()[0])
+    info = ws.run(["brdf", "info", "white.grd"]).stdout
+    a0 = float(re.search(r"albedo\s+0 deg: ([0-9.]+)", info)[1])
+    kb = 0.5
+    predicted = kb * math.pi * f0 / (1 - kb * a0)
+    expect(abs(predicted - 1) < 0.02, f"the white grid predicts {predicted}, not 1 within 2%")
+    ws.render(furnace("splatfurnace", f'Surface "brdfsurface" "string grid" "white.grd" '
+                      f'"float Kb" [{kb}]', size=32), "splatfurnace")
+    (image,) = read_images(ws.path("splatfurnace.tif"))
+    mean, error = mean_and_error(image)
+    print(f"     splatfurnace: {mean:.5f} ± {error:.5f} (the grid predicts {predicted:.5f})")
+    expect(error < 0.005, f"splatfurnace: the noise {error:.5f} is too large")
+    expect(abs(mean - predicted) < 4 * error + 0.002 * predicted,
+           f"splatfurnace: radiance {mean:.5f} ± {error:.5f}, the grid predicts {predicted:.5f}")
 
 
 CORNELL = """Format 48 48 1
