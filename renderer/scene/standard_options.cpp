@@ -43,6 +43,7 @@ constexpr StandardParam kStandardParams[] = {
     {"Option", "BRDFLight", "averageazimuth", "uniform integer"},
     {"Attribute", "identifier", "name", "uniform string"},
     {"Attribute", "light", "shadows", "uniform string"},
+    {"Attribute", "light", "nsamples", "uniform integer"},
     {"Attribute", "displacementbound", "sphere", "uniform float"},
     {"Attribute", "displacementbound", "coordinatesystem", "uniform string"},
     {"Attribute", "trimcurve", "sense", "uniform string"},

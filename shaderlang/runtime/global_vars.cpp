@@ -14,7 +14,9 @@ constexpr unsigned kAll = kS | kL | kD | kV | kI;
 // name, type, varying, readers, writers
 const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"P", BaseType::Point, true, kAll, kD},
-    {"N", BaseType::Normal, true, kS | kL | kD, kS | kD},
+    // Light shaders may write N, as Pixie's arealight does (N = normalize(N)); in an area
+    // light it is the sample point's normal (docs/shading-language.md, Area lights).
+    {"N", BaseType::Normal, true, kS | kL | kD, kS | kL | kD},
     {"Ng", BaseType::Normal, true, kS | kL | kD, 0},
     {"I", BaseType::Vector, true, kS | kD | kV, 0},
     {"E", BaseType::Point, false, kAll, 0},
