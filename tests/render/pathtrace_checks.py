@@ -19,8 +19,8 @@
   Lambert map and Kb = 0.5, sampled from its splats (brdfsim/splat_sampler.h): L = Kb π f(0→0) /
   (1 - Kb a(0)) with the grid's own f and albedo a (`gonio brdf eval`, `info`; within 2% of 1),
   within 4σ of the paths' noise (σ ≈ 0.4% at 32 × 32 pixels × 16 paths) plus 0.2%;
-* determinism: a Cornell-like box with diffuse and glossy walls renders to the same pixels with
-  1 and 2 threads.
+* determinism: a Cornell-like box with diffuse walls, a glossy sphere, a point light and an area
+  light renders to the same pixels with 1 and 2 threads.
 
     pathtrace_checks.py --gonio build/bin/gonio"""
 
@@ -158,7 +158,13 @@ Display "{name}.tif" "tiff" "rgba"
 Option "pathtrace" "integer enable" [1]
 Translate 0 0 3.5
 WorldBegin
-LightSource "pointlight" 1 "from" [0 0.9 0] "intensity" [1.5]
+LightSource "pointlight" 1 "from" [0.5 0.8 0] "intensity" [0.5]
+AttributeBegin
+AreaLightSource "arealight" 2 "intensity" [15]
+Surface "matte" "Kd" [0] "Ka" [0]
+Polygon "P" [-0.3 0.99 -0.3  0.3 0.99 -0.3  0.3 0.99 0.3  -0.3 0.99 0.3]
+AttributeEnd
+Illuminate 2 1
 Surface "matte" "Kd" [0.7] "Ka" [0]
 Polygon "P" [-1 -1 -1  1 -1 -1  1 -1 1  -1 -1 1]
 Polygon "P" [-1 1 -1  -1 1 1  1 1 1  1 1 -1]
