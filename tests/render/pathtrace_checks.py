@@ -19,6 +19,7 @@
   Lambert map and Kb = 0.5, sampled from its splats (brdfsim/splat_sampler.h): L = Kb π f(0→0) /
   (1 - Kb a(0)) with the grid's own f and albedo a (`gonio brdf eval`, `info`; within 2% of 1),
   within 4σ of the paths' noise (σ ≈ 0.4% at 32 × 32 pixels × 16 paths) plus 0.2%;
+* bad input: a missing or broken .grd is an error at the Surface's line (exit 1);
 * determinism: a Cornell-like box with diffuse walls, a glossy sphere, a point light and an area
   light renders to the same pixels with 1 and 2 threads.
 
@@ -193,8 +194,24 @@ def same_pixels_whatever_the_threads(ws):
     expect(mean > 0.01, f"the box is black (mean red {mean})")
 
 
+def bad_grids_are_located_errors(ws):
+    """A grid a path-traced brdf() surface names that is missing or not a .grd: exit 1 with the
+    Surface's RIB line, never a crash."""
+    with open(ws.path("bogus.grd"), "w") as f:
+        f.write("bogus")
+    for grid, words in (("nothere.grd", "not found"), ("bogus.grd", "truncated")):
+        rib = ('Option "pathtrace" "integer enable" [1]\nFormat 8 8 1\n'
+               'Display "bad.tif" "tiff" "rgba"\nWorldBegin\nLightSource "pointlight" 1\n'
+               f'Surface "brdfsurface" "string grid" "{grid}"\nTranslate 0 0 5\n'
+               "Sphere 1 -1 1 360\nWorldEnd\n")
+        proc = ws.render(rib, "bad", expect_code=1)
+        expect(re.search(rf"bad\.rib:6:1: error: path tracing: .*{words}", proc.stderr),
+               f"{grid}: no located error:\n{proc.stderr}")
+
+
 CHECKS = [furnace_rho_05, furnace_rho_08, area_furnace_rho_05, area_furnace_rho_08,
-          splat_plane_reflects_all_energy, splat_furnace, same_pixels_whatever_the_threads]
+          splat_plane_reflects_all_energy, splat_furnace, same_pixels_whatever_the_threads,
+          bad_grids_are_located_errors]
 
 if __name__ == "__main__":
     sys.exit(workspace_main(__doc__, CHECKS, "gonio_pathtrace_"))
