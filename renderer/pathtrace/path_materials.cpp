@@ -59,7 +59,8 @@ std::shared_ptr<const SplatSurface> PathMaterials::MakeSplat(const sl::ShaderIns
         try {
             loaded.file = std::make_shared<const GrdFile>(ReadGrd(path));
         } catch (const std::exception& e) {
-            diagnostics_.Error(attributes.surface.loc, "path tracing: " + path + ": " + e.what());
+            // The .grd reader's messages name the file.
+            diagnostics_.Error(attributes.surface.loc, std::string("path tracing: ") + e.what());
             return nullptr;
         }
         loaded.sampler =
