@@ -69,19 +69,6 @@ double Integrate(double lo, double hi, int panels, const std::function<double(do
     return sum * 0.5 * h;
 }
 
-// Largest b with norm(a, b) <= R: the kernel is smooth inside, so the inner integral stops there.
-double SupportLimit(Norm norm, double radius, double a) {
-    switch (norm) {
-        case Norm::kL1:
-            return radius - a;
-        case Norm::kL2:
-            return std::sqrt(std::max(0.0, radius * radius - a * a));
-        case Norm::kLinf:
-            return radius;
-    }
-    return radius;
-}
-
 // ∫∫ k(norm(a, b) / R) wa(a) wb(b) db da over a in [aLo, aHi] (aLo >= 0), b in [0, R].
 // `panels` sets the accuracy: 16 gives rounding-level masses, 4 is enough for tables that are
 // interpolated anyway.
@@ -90,7 +77,7 @@ double KernelDoubleIntegral(Norm norm, double radius, double aLo, double aHi,
                             const std::function<double(double)>& wb, int panels = 16) {
     const int inner = std::max(1, panels / 4);
     return Integrate(aLo, aHi, panels, [&](double a) {
-        const double bMax = SupportLimit(norm, radius, a);
+        const double bMax = KernelSupportLimit(norm, radius, a);
         auto integrand = [&](double b) {
             return SplatKernel(CombineDistances(norm, a, b) / radius) * wb(b);
         };
@@ -186,6 +173,18 @@ class InDomainTable {
 
 }  // namespace
 
+double KernelSupportLimit(Norm norm, double radius, double a) {
+    switch (norm) {
+        case Norm::kL1:
+            return radius - a;
+        case Norm::kL2:
+            return std::sqrt(std::max(0.0, radius * radius - a * a));
+        case Norm::kLinf:
+            return radius;
+    }
+    return radius;
+}
+
 Norm ParseNorm(const std::string& text) { return ParseNormOrThrow(text); }
 
 const char* NormName(Norm norm) {
@@ -235,30 +234,33 @@ double FlatKernelMass3D(double radius, Norm norm) {
     return KernelDoubleIntegral(norm, radius, 0.0, radius, LineWeight, FlatWeight);
 }
 
-double KernelOutMarginal(double radius, Norm norm, double dIn) {
+KernelOutMarginalTable::KernelOutMarginalTable(double radius, Norm norm) : radius_(radius) {
     CheckRadius(radius);
-    if (dIn >= radius) return 0.0;
-    constexpr int kSteps = 512;
     static std::mutex mutex;
     static std::map<std::pair<double, int>, std::vector<double>> tables;
-    const std::vector<double>* table;
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        auto& slot = tables[std::make_pair(radius, static_cast<int>(norm))];
-        if (slot.empty()) {
-            for (int i = 0; i <= kSteps; ++i) {
-                const double a = radius * i / kSteps;
-                const double bMax = SupportLimit(norm, radius, a);
-                slot.push_back(Integrate(0.0, bMax, 4, [&](double b) {
-                    return SplatKernel(CombineDistances(norm, a, b) / radius) * SphereWeight(b);
-                }));
-            }
+    std::lock_guard<std::mutex> lock(mutex);
+    auto& slot = tables[std::make_pair(radius, static_cast<int>(norm))];
+    if (slot.empty()) {
+        for (int i = 0; i <= kSteps; ++i) {
+            const double a = radius * i / kSteps;
+            const double bMax = KernelSupportLimit(norm, radius, a);
+            slot.push_back(Integrate(0.0, bMax, 4, [&](double b) {
+                return SplatKernel(CombineDistances(norm, a, b) / radius) * SphereWeight(b);
+            }));
         }
-        table = &slot;
     }
-    const double u = dIn / radius * kSteps;
+    table_ = &slot;  // std::map nodes stay where they are
+}
+
+double KernelOutMarginalTable::operator()(double dIn) const {
+    if (dIn >= radius_) return 0.0;
+    const double u = dIn / radius_ * kSteps;
     const int i = std::min(static_cast<int>(u), kSteps - 1);
-    return (*table)[i] + (u - i) * ((*table)[i + 1] - (*table)[i]);
+    return (*table_)[i] + (u - i) * ((*table_)[i + 1] - (*table_)[i]);
+}
+
+double KernelOutMarginal(double radius, Norm norm, double dIn) {
+    return KernelOutMarginalTable(radius, norm)(dIn);
 }
 
 double InDomainKernelMass(double radius, Norm norm, bool isotropic, double cIn, double cOut) {

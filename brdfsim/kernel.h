@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace gonio {
 
@@ -70,6 +71,23 @@ double FlatKernelMass3D(double radius, Norm norm);
 // weight at incoming distance dIn once the outgoing direction is integrated out. Interpolated
 // from a table cached per (R, norm).
 double KernelOutMarginal(double radius, Norm norm, double dIn);
+
+// The table behind KernelOutMarginal, fetched once (one lock) for callers that look it up many
+// times, such as the splat sampler at every path vertex.
+class KernelOutMarginalTable {
+  public:
+    KernelOutMarginalTable(double radius, Norm norm);
+    double operator()(double dIn) const;
+
+  private:
+    static constexpr int kSteps = 512;
+    const std::vector<double>* table_;
+    double radius_;
+};
+
+// Largest outgoing distance b with norm(a, b) <= R: where the kernel's support ends once the
+// incoming distance is a.
+double KernelSupportLimit(Norm norm, double radius, double a);
 
 // In-domain mass of a splat centred at colatitudes (cIn, cOut) for the thesis's renormalisation
 // (eqs. 4.9-4.10, done on the sphere). For isotropic maps cIn is θ_in and the in-domain part of

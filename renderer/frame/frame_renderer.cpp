@@ -18,6 +18,7 @@
 #include "renderer/frame/shading_points.h"
 #include "renderer/image/film.h"
 #include "renderer/image/image_writer.h"
+#include "renderer/pathtrace/path_integrator.h"
 #include "renderer/raytrace/camera.h"
 #include "renderer/raytrace/ray_scene.h"
 #include "renderer/shading/imager_shading.h"
@@ -106,7 +107,8 @@ class SampleGenerator {
 class TileRenderer {
   public:
     TileRenderer(const RayScene& scene, const Camera& camera, ShadingWorker& shading,
-                 const Options& options, const std::vector<ShaderOutput>& outputs)
+                 const Options& options, const std::vector<ShaderOutput>& outputs,
+                 PathWorker* paths)
         : scene_(scene),
           camera_(camera),
           shading_(shading),
@@ -116,13 +118,16 @@ class TileRenderer {
           colorToRgb_(options.colorToRgb),
           xsamples_(std::max(1, int(std::lround(options.xsamples)))),
           ysamples_(std::max(1, int(std::lround(options.ysamples)))),
-          sharing_(PixelFootprint(camera, options)) {}
+          sharing_(PixelFootprint(camera, options)),
+          paths_(paths) {}
 
     // Renders the samples of `pixels` into `film`; returns the number of rays traced.
     uint64_t Render(const Imath::Box2i& pixels, const SampleGenerator& generator, FilmTile* film);
 
   private:
     void TraceAndShade();
+    // Under Option "pathtrace": each sample's colour is the path tracer's radiance.
+    void TracePaths();
     void Splat(FilmTile* film);
     // The world width of one pixel near the image centre, at distance 0 and its growth per
     // unit distance along the ray (what ShadingPointSharing compares hit distances with).
@@ -170,6 +175,8 @@ class TileRenderer {
     std::vector<float> colorToRgb_;
     int xsamples_, ysamples_;
     ShadingPointSharing sharing_;
+    PathWorker* paths_;
+    std::vector<float> radiance_;
     uint64_t rays_ = 0;
 };
 
@@ -241,7 +248,10 @@ uint64_t TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator&
     rays_ = 0;
     samples_.clear();
     generator.AddSamples(pixels, &samples_);
-    TraceAndShade();
+    if (paths_)
+        TracePaths();
+    else
+        TraceAndShade();
     Splat(film);
     return rays_;
 }
@@ -269,6 +279,19 @@ void TileRenderer::TraceAndShade() {
         if (hitSamples_.empty()) break;
         ShadeLayer();
     }
+}
+
+void TileRenderer::TracePaths() {
+    radiance_.resize(size_t(ncomps_));
+    const uint64_t before = paths_->RaysTraced();
+    for (SampleState& sample : samples_) {
+        float depth = 0;
+        if (!paths_->Radiance(sample.ray, sample.randomSeed, radiance_.data(), &depth)) continue;
+        ToRgb(radiance_.data(), sample.colour);
+        sample.alpha = 1;
+        sample.depth = depth;
+    }
+    rays_ += paths_->RaysTraced() - before;
 }
 
 void TileRenderer::Splat(FilmTile* film) {
@@ -477,8 +500,12 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const int ysamples = std::max(1, int(std::lround(options.ysamples)));
     const std::vector<DisplaySpec> displays = Displays(frame, settings, diagnostics);
     std::vector<std::string> channelNames = {"r", "g", "b", "a", "z"};
+    // The path tracer reads the shaders itself; the frame loop's shading is then unused.
+    const std::unique_ptr<PathIntegrator> paths =
+        PathIntegrator::ForFrame(frame, scene, diagnostics);
     const std::unique_ptr<SurfaceShading> shading =
-        MakeShaderShading(frame, scene, camera, diagnostics);
+        paths ? MakeDefaultSurfaceShading(options.colorComponents)
+              : MakeShaderShading(frame, scene, camera, diagnostics);
     const std::vector<ShaderOutput> outputs = OutputsOfDisplays(displays, *shading, &channelNames);
     float crop[4];
     ComposeCropWindow(options.cropWindow, settings.crop, crop);
@@ -495,6 +522,8 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     std::atomic<uint64_t> raysTraced{0};
     tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
         [&] { return shading->MakeWorker(); });
+    tbb::enumerable_thread_specific<std::unique_ptr<PathWorker>> pathWorkers(
+        [&] { return paths ? paths->MakeWorker() : nullptr; });
     tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
     const SampleGenerator generator(settings.seed, xsamples, ysamples, options, camera,
                                     OutputFloats(outputs));
@@ -504,7 +533,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
             auto& renderer = renderers.local();
             if (!renderer)
                 renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options,
-                                                          outputs);
+                                                          outputs, pathWorkers.local().get());
             FilmTile filmTile = film.StartTile(tile);
             raysTraced += renderer->Render(pixels, generator, &filmTile);
             film.StoreTile(std::move(filmTile));

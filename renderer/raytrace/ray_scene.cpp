@@ -13,37 +13,13 @@
 #include "base/overloaded.h"
 #include "renderer/raytrace/motion.h"
 #include "renderer/raytrace/shape_evaluation.h"
+#include "renderer/raytrace/transforms.h"
 
 namespace gonio {
 namespace {
 
 using Imath::M44f;
 using Imath::V3f;
-
-V3f TransformPoint(const M44f& m, const V3f& p) {
-    V3f out;
-    m.multVecMatrix(p, out);
-    return out;
-}
-
-V3f TransformVector(const M44f& m, const V3f& v) {
-    V3f out;
-    m.multDirMatrix(v, out);
-    return out;
-}
-
-// Normals transform with the inverse transpose; with row vectors that is n·(M⁻¹)ᵀ.
-V3f TransformNormal(const M44f& objectFromSpace, const V3f& n) {
-    const M44f& m = objectFromSpace;  // n·Mᵀ without copying the transpose
-    return V3f(n.x * m[0][0] + n.y * m[0][1] + n.z * m[0][2],
-               n.x * m[1][0] + n.y * m[1][1] + n.z * m[1][2],
-               n.x * m[2][0] + n.y * m[2][1] + n.z * m[2][2]);
-}
-
-V3f Normalized(const V3f& v) {
-    const float len = v.length();
-    return len > 0 ? v / len : V3f(0, 0, 1);
-}
 
 // Width scales with the cube root of the volume change: exact for similarity transforms.
 float LengthScale(const M44f& m) { return std::cbrt(std::fabs(m.determinant())); }

@@ -30,8 +30,8 @@ struct ShaderInstance {
     bool IsSet() const { return !name.empty() && name != "null"; }
 };
 
-// A light source declared by LightSource (or AreaLightSource: recorded, shaded as a point light
-// until area lights land).
+// A light source declared by LightSource or AreaLightSource (whose geometry is
+// SceneLight::shapes).
 struct LightInstance {
     ShaderInstance shader;
     RtHandle handle;
@@ -48,6 +48,9 @@ struct Attributes {
     ShaderInstance interior;
     ShaderInstance exterior;
     std::set<int> activeLights;  // indices into Frame::lights that illuminate this primitive
+    // The Frame::lights index of the AreaLightSource of this attribute block, whose geometry
+    // the following primitives become (RISpec §4.1.3); −1: none.
+    int areaLight = -1;
     // Orientation: "outside" keeps the geometrically outward normal of every primitive,
     // "inside" reverses it; "lh"/"rh" ask for the normal dPdu×dPdv gives in a space of that
     // handedness, resolved per primitive against the handedness of its camera-from-object

@@ -2,6 +2,7 @@
 
 #include <Imath/ImathMatrixAlgo.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "base/math.h"
@@ -21,6 +22,12 @@ std::string HandleKey(const RtHandle& handle) {
 bool LightCastsShadows(const Attributes& attributes) {
     auto it = attributes.user.find("light");
     return it != attributes.user.end() && it->second.GetString("shadows", "off") == "on";
+}
+
+int LightSamples(const Attributes& attributes) {
+    auto it = attributes.user.find("light");
+    if (it == attributes.user.end()) return SceneLight().samples;
+    return std::max(1, int(it->second.GetFloat("nsamples", float(SceneLight().samples))));
 }
 
 }  // namespace
@@ -88,6 +95,7 @@ void SceneBuilder::LightSource(const std::string& name, const RtHandle& handle,
     SetShader(&light.light.shader, name, params, loc);
     light.light.handle = handle;
     light.castsShadows = LightCastsShadows(state_->attributes);
+    light.samples = LightSamples(state_->attributes);
     if (state_->inWorld)
         AddLight(std::move(light));
     else
@@ -101,14 +109,19 @@ void SceneBuilder::AddLight(SceneLight light) {
     MutableAttributes().activeLights.insert(index);
 }
 
+// The primitives that follow in this attribute block are the light's geometry (AddShape);
+// before WorldBegin there is no geometry to give it, and it lights from its origin.
 void SceneBuilder::AreaLightSource(const std::string& name, const RtHandle& handle,
                                    const ParamList& params, const FileLoc& loc) {
-    diagnostics_.NoteOnce("AreaLightSource", loc,
-                          "AreaLightSource is recorded and lights the scene from its origin, as "
-                          "a LightSource would");
     LightSource(name, handle, params, loc);
     auto& lights = state_->inWorld ? state_->frame.lights : state_->cameraLights;
     lights.back().light.isArea = true;
+    if (state_->inWorld)
+        MutableAttributes().areaLight = int(lights.size()) - 1;
+    else
+        diagnostics_.WarningOnce("AreaLightSource outside world", loc,
+                                 "AreaLightSource before WorldBegin has no geometry and lights "
+                                 "from its origin, as a LightSource would");
 }
 
 int SceneBuilder::LightIndex(const RtHandle& handle, const FileLoc& loc) {

@@ -98,10 +98,31 @@ void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
             shape.flipNormals = leftHanded;
             break;
     }
-    if (state_->openObject)
+    if (state_->openObject) {
         state_->openObject->shapes.push_back(std::move(shape));
-    else
+        if (state_->attributes.areaLight >= 0)
+            diagnostics_.WarningOnce("area light object", loc,
+                                     "a shape inside ObjectBegin is not area light geometry: "
+                                     "its instances are rendered, but do not emit");
+    } else {
         state_->frame.shapes.push_back(std::move(shape));
+        JoinAreaLight(loc);
+    }
+}
+
+// The shape just added becomes geometry of the block's AreaLightSource (RISpec §4.1.3), if
+// it is of a kind that has a surface to sample.
+void SceneBuilder::JoinAreaLight(const FileLoc& loc) {
+    const int light = state_->attributes.areaLight;
+    if (light < 0 || size_t(light) >= state_->frame.lights.size()) return;
+    const ShapeGeometry& geometry = state_->frame.shapes.back().geometry;
+    if (std::holds_alternative<CurveSet>(geometry) || std::holds_alternative<PointSet>(geometry)) {
+        diagnostics_.WarningOnce("area light curves", loc,
+                                 "curves and points are not area light geometry: they are "
+                                 "rendered, but do not emit");
+        return;
+    }
+    state_->frame.lights[light].shapes.push_back(state_->frame.shapes.size() - 1);
 }
 
 template <class T>

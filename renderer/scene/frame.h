@@ -64,6 +64,16 @@ struct SceneLight {
     // Attribute "light" "shadows" "on" when the light was declared: shadows are traced. Off by
     // default, as in BMRT and Aqsis (RenderMan lights cast no shadows unless asked to).
     bool castsShadows = false;
+    // An AreaLightSource's geometry (RISpec 3.2 §4.1.3): indices into Frame::shapes of the
+    // primitives that follow it in the same attribute block, which are also ordinary visible
+    // geometry. Polygons, patches, NURBS, quadrics and subdivision meshes join it; curves,
+    // points and shapes inside object definitions (and so their instances) do not, each with a
+    // warning. Empty for a LightSource, and for an area light with no geometry (it lights
+    // from the origin of its shader space, as a LightSource would).
+    std::vector<size_t> shapes;
+    // Attribute "light" "nsamples" when the light was declared: the points on an area light's
+    // surface its shader runs at for each shaded point (stratified; at least 1).
+    int samples = 16;
 };
 
 struct Frame {

@@ -243,6 +243,10 @@ void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
         return;
     }
     if (!RequireWorld("ObjectInstance", loc)) return;
+    if (state_->attributes.areaLight >= 0)
+        diagnostics_.WarningOnce("area light instance", loc,
+                                 "an object instance is not area light geometry: it is "
+                                 "rendered, but does not emit");
     ObjectInstanceUse use{
         it->second, state_->transform, {}, state_->transformTimes, state_->transformSamples};
     const ObjectDefinition& definition = *it->second;

@@ -237,6 +237,7 @@ class SceneBuilder : public RiTarget {
     Attributes& MutableAttributes();
     // Adds a primitive's shape with the current attributes and transform.
     void AddShape(ShapeGeometry geometry, const FileLoc& loc);
+    void JoinAreaLight(const FileLoc& loc);
     bool TypeVars(const ParamList& params, PrimVarSet* vars);
     template <class T>
     void AddGeometry(const char* request, GeometryResult<T> result, const FileLoc& loc);

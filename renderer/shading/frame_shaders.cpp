@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/search_path.h"
+#include "renderer/raytrace/shadow_transmission.h"
 #include "renderer/shading/rib_shader_parameters.h"
 
 namespace gonio {
@@ -87,6 +88,23 @@ std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(
     return instance;
 }
 
+// An area light runs its shader at points on its surface; one with no surface to sample (no
+// primitives followed it, or none with area) lights from its origin, as a LightSource does.
+void FrameShaders::AddAreaGeometry(const SceneLight& light, FrameLight* frameLight) const {
+    auto geometry =
+        std::make_shared<const AreaLightGeometry>(AreaLightGeometry::Build(frame_, light));
+    if (geometry->Empty()) {
+        diagnostics_.WarningOnce("area light without geometry", light.light.shader.loc,
+                                 "AreaLightSource \"" + light.light.shader.name +
+                                     "\" has no geometry with area (no polygon, patch, quadric "
+                                     "or subdivision mesh followed it in its attribute block); "
+                                     "it lights from its origin, as a LightSource would");
+        return;
+    }
+    frameLight->area = std::move(geometry);
+    frameLight->samples = light.samples;
+}
+
 FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
     : frame_(frame),
       diagnostics_(diagnostics),
@@ -102,8 +120,10 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
         frameLight.instance = Instance(light.light.shader, sl::ShaderType::Light);
         frameLight.currentFromShader = light.light.shader.worldFromShader * CurrentFromWorld();
         frameLight.castsShadows = light.castsShadows;
+        if (light.light.isArea) AddAreaGeometry(light, &frameLight);
         lights_.push_back(std::move(frameLight));
     }
+    allShadowsOpaque_ = gonio::AllShadowsOpaque(frame);
     // Parameters are known and primitive variables bound: fold every instance's constants now,
     // before the threads share them.
     for (auto& [key, instance] : instances_)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/diagnostics.h"
+#include "renderer/raytrace/area_light_geometry.h"
 #include "renderer/raytrace/camera.h"
 #include "renderer/scene/frame.h"
 #include "renderer/shading/shader_needs.h"
@@ -32,6 +33,10 @@ struct FrameLight {
     std::shared_ptr<sl::ShaderInstance> instance;  // null when the shader failed to load
     M44f currentFromShader;
     bool castsShadows = false;
+    // An AreaLightSource's surface (null: a LightSource, or an area light without geometry,
+    // which lights from the origin of its shader space) and its samples per shaded point.
+    std::shared_ptr<const AreaLightGeometry> area;
+    int samples = 1;
 };
 
 class FrameShaders {
@@ -54,12 +59,15 @@ class FrameShaders {
     const M44f& CurrentFromWorld() const { return frame_.options.cameraFromWorld; }
     // Where texture(), environment() and brdf() look for relative file names.
     const std::vector<std::string>& TextureSearchPath() const { return texturePath_; }
+    // Whether every primitive blocks shadow rays completely (shadow_transmission.h).
+    bool AllShadowsOpaque() const { return allShadowsOpaque_; }
 
   private:
     std::shared_ptr<sl::ShaderInstance> Instance(const ShaderInstance& request,
                                                  sl::ShaderType expected);
     // Records the shaders of `shadedWith` and binds the shape's primitive variables to them.
     void AddShapeGroup(const SceneShape& shape, const Attributes& shadedWith);
+    void AddAreaGeometry(const SceneLight& light, FrameLight* frameLight) const;
 
     const Frame& frame_;
     Diagnostics& diagnostics_;
@@ -69,6 +77,7 @@ class FrameShaders {
     std::map<const Attributes*, ShaderGroup> groups_;
     std::vector<FrameLight> lights_;
     bool anyTakesDerivatives_ = false;
+    bool allShadowsOpaque_ = true;
     int traceMaxDepth_ = kDefaultTraceMaxDepth;
     std::vector<std::string> texturePath_;
 };

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "renderer/raytrace/shadow_transmission.h"
 #include "renderer/shading/option_query.h"
 #include "renderer/shading/shading_files.h"
 
@@ -125,25 +126,50 @@ void RenderContext::EvaluateLights(const float* P, const uint8_t* active,
     for (int index : batch_->attributes->activeLights) {
         const FrameLight& light = lights[index];
         if (!light.instance) continue;
-        sl::ShaderGlobals globals;
-        globals.n = n_;
-        globals.Ps = lightP_;
-        if (light.instance->Master().IsAmbientLight())
-            ambientGlobals_.Set(*batch_, worldFromCurrent_, n_, lightP_, &globals);
-        sl::LightResult result;
         shader_ = &sceneLights[index].light.shader;  // "shader" space is the light's
-        lightExecutor_.RunLight(*light.instance, globals, *this, &result);
-        result.shaderIndex = index;
-        if (captureLights_)
-            sl::CaptureLightParameters(*light.instance, lightExecutor_, n_, &result);
-        if (active)
-            for (int i = 0; i < n_; ++i) result.lit[i] &= mainActive_[i];
-        if (light.castsShadows && !result.ambient) TraceShadows(&result);
-        results->push_back(std::move(result));
+        // An area light runs once per sample point on its surface; each run is one light to
+        // illuminance, its Cl weighted by 1/(pdf · samples) (docs/shading-language.md).
+        const int runs = light.area ? light.samples : 1;
+        for (int k = 0; k < runs; ++k) {
+            sl::ShaderGlobals globals;
+            globals.n = n_;
+            globals.Ps = lightP_;
+            if (light.instance->Master().IsAmbientLight())
+                ambientGlobals_.Set(*batch_, worldFromCurrent_, n_, lightP_, &globals);
+            if (light.area) {
+                const uint64_t* seeds = batch_->randomSeeds.size() == size_t(all)
+                                            ? batch_->randomSeeds.data()
+                                            : nullptr;
+                AreaLightSamplePoints(*light.area, k, runs, seeds, n_, shaders_.CurrentFromWorld(),
+                                      &areaPoints_);
+                globals.P = areaPoints_.P.data();
+                globals.N = globals.Ng = areaPoints_.N.data();
+            }
+            results->push_back(RunLight(index, light, globals, active));
+        }
     }
     n_ = all;
     for (sl::LightResult& result : *results) ShareLightWithNeighbours(&result);
     shader_ = surfaceShader;
+}
+
+sl::LightResult RenderContext::RunLight(int index, const FrameLight& light,
+                                        const sl::ShaderGlobals& globals, const uint8_t* active) {
+    sl::LightResult result;
+    shadowMapCalled_ = false;
+    runningLight_ = true;
+    lightExecutor_.RunLight(*light.instance, globals, *this, &result);
+    runningLight_ = false;
+    result.shaderIndex = index;
+    if (captureLights_) sl::CaptureLightParameters(*light.instance, lightExecutor_, n_, &result);
+    if (active)
+        for (int i = 0; i < n_; ++i) result.lit[i] &= mainActive_[i];
+    if (light.area)
+        for (int c = 0; c < colorComponents_; ++c)
+            for (int i = 0; i < n_; ++i) result.Cl[c * size_t(n_) + i] *= areaPoints_.weight[i];
+    // A light that asked for a shadow map is shadowed by rays instead (see Shadow).
+    if ((light.castsShadows || shadowMapCalled_) && !result.ambient) TraceShadows(&result);
+    return result;
 }
 
 void RenderContext::ShareLightWithNeighbours(sl::LightResult* result) const {
@@ -166,6 +192,8 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
     const float end = light->atInfinity ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
     const uint8_t* all =
         light->fromAllDirections.empty() ? nullptr : light->fromAllDirections.data();
+    const bool opaque = shaders_.AllShadowsOpaque();
+    std::vector<float> passed(colorComponents_, 1.f);
     for (int i = 0; i < n_; ++i) {
         // Light from all directions has no one direction to test (see the docs).
         if (!light->lit[i] || (all && all[i])) continue;
@@ -174,8 +202,14 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
         worldFromCurrent_.multVecMatrix(P, org);
         worldFromCurrent_.multDirMatrix(L, dir);
         const float eps = 1e-4f * std::max(1.f, org.length() / std::max(dir.length(), 1e-20f));
-        if (!scene_.Occluded(org, dir, eps, end, time)) continue;
-        for (int c = 0; c < colorComponents_; ++c) light->Cl[c * n_ + i] = 0;
+        if (opaque) {
+            if (!scene_.Occluded(org, dir, eps, end, time)) continue;
+            std::fill(passed.begin(), passed.end(), 0.f);
+        } else {
+            // Partly transparent shadow casters let 1 − Os through (shadow_transmission.h).
+            ShadowTransmission(scene_, org, dir, eps, end, time, colorComponents_, passed.data());
+        }
+        for (int c = 0; c < colorComponents_; ++c) light->Cl[c * n_ + i] *= passed[c];
     }
 }
 
@@ -213,12 +247,19 @@ bool RenderContext::TextureInfo(const std::string& name, const std::string& data
     return true;
 }
 
+// gonio makes no shadow maps (MakeShadow is ignored): a light shader's shadow("map", Ps) sees
+// nothing in the way (0), and the light's Cl is shadowed by rays towards the light instead,
+// which is what 1 − shadow() multiplies it by in the standard shadowspot, shadowpoint and
+// shadowdistant. Outside a light shader there is no light to trace towards.
 bool RenderContext::Shadow(const std::string& name, const float*, const uint8_t*, float* out) {
-    // Shadows are ray traced (Attribute "light" "shadows" "on"); shadow maps are not read.
-    RuntimeWarning("shadow map", "shadow(\"" + name +
-                                     "\"): shadow maps are not used; shadows are ray traced "
-                                     "when a light has Attribute \"light\" \"shadows\" \"on\"");
     std::fill(out, out + n_, 0.f);
+    if (runningLight_) {
+        shadowMapCalled_ = true;
+        return true;
+    }
+    RuntimeWarning("shadow map", "shadow(\"" + name +
+                                     "\") outside a light shader: shadow maps are not made, "
+                                     "and there is no light to trace shadow rays towards");
     return false;
 }
 

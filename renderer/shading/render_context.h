@@ -10,6 +10,7 @@
 
 #include "renderer/raytrace/ray_scene.h"
 #include "renderer/shading/ambient_light_globals.h"
+#include "renderer/shading/area_light_samples.h"
 #include "renderer/shading/frame_shaders.h"
 #include "renderer/shading/named_textures.h"
 #include "renderer/shading/surface_shading.h"
@@ -126,6 +127,9 @@ class RenderContext : public sl::ShadingContext {
     void EvaluateLights(const float* P, const uint8_t* active,
                         std::vector<sl::LightResult>* results);
     const float* MainPoints(const float* P, const uint8_t* active);
+    // One run of light `index` for the main points, with its area weight and shadows.
+    sl::LightResult RunLight(int index, const FrameLight& light, const sl::ShaderGlobals& globals,
+                             const uint8_t* active);
     void ShareLightWithNeighbours(sl::LightResult* result) const;
     void TraceShadows(sl::LightResult* light) const;
     // The points whose lights and traced rays are computed (the rest share them).
@@ -153,6 +157,9 @@ class RenderContext : public sl::ShadingContext {
     std::vector<sl::LightResult> movedLights_;  // LightsAt's, per call
     std::vector<uint8_t> mainActive_;
     bool lightsValid_ = false;
+    AreaLightPoints areaPoints_;    // the running area light's sample points
+    bool runningLight_ = false;     // a light shader is running (Shadow's fallback)
+    bool shadowMapCalled_ = false;  // ... and it called shadow()
     std::vector<int> noNeighbours_;
     M44f worldFromCurrent_;
     sl::MessageShaders messageShaders_;

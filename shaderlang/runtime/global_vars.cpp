@@ -14,8 +14,9 @@ constexpr unsigned kAll = kS | kL | kD | kV | kI;
 // name, type, varying, readers, writers
 const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"P", BaseType::Point, true, kAll, kD},
-    // Light shaders may write N and read I, as Pixie's do (its arealight normalises N; its
-    // ambient lights run at the surface points and face N towards I).
+    // Light shaders may write N and read I, as Pixie's do: its arealight normalises N (in an
+    // area light the sample point's normal, docs/shading-language.md, Area lights); its
+    // ambient lights run at the surface points and face N towards I.
     {"N", BaseType::Normal, true, kS | kL | kD, kS | kL | kD},
     {"Ng", BaseType::Normal, true, kS | kL | kD, 0},
     {"I", BaseType::Vector, true, kS | kL | kD | kV, 0},

@@ -19,8 +19,8 @@ import sys
 # The library folders, most specific first, so that renderer/scene/x.h belongs to renderer/scene.
 FOLDERS = [
     "base", "renderer/rib", "renderer/geometry", "renderer/scene", "renderer/raytrace",
-    "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "shaderlang",
-    "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "farm", "cli",
+    "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "renderer/pathtrace",
+    "shaderlang", "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "farm", "cli",
 ]
 # External libraries only some folders may see: the build keeps them private to those.
 GUARDED = ["embree3", "OpenImageIO", "OpenEXR", "tiffio.h", "png.h", "Eigen", "httplib.h",

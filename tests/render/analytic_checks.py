@@ -514,6 +514,25 @@ def render_in_folder(gonio, folder, shaders, scene, args=()):
     return None
 
 
+def frames_main(description, prefix, shaders, scene, images, checks, prepare=None):
+    """The command line of a checks script that renders one scene (`--gonio PATH`): in a
+    temporary folder, `prepare(folder)` (may be None), the shaders and scene.rib written and
+    rendered, the image files `images` (name: file) read, and the checks run on
+    {name: Image}; returns the exit status."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--gonio", required=True)
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix=prefix) as folder:
+        if prepare:
+            prepare(folder)
+        failure = render_in_folder(os.path.abspath(args.gonio), folder, shaders, scene)
+        if failure:
+            print(failure)
+            return 1
+        read = read_images(*(os.path.join(folder, file) for file in images.values()))
+        return run_checks(checks, dict(zip(images, read)))
+
+
 def workspace_main(description, checks, prefix, shaders=None):
     """The command line of a checks script run on one Workspace (`--gonio PATH`): writes the
     shaders (name: source) into it and runs the checks; returns the exit status."""

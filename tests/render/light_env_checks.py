@@ -15,15 +15,12 @@ environment() directions (issue 3):
 
 All frames go into one RIB file and one `gonio render`; images are read with one oiiotool."""
 
-import argparse
 import os
 import struct
 import subprocess
 import sys
-import tempfile
 
-from analytic_checks import (EVERY_SAMPLE_SHADED, expect, read_images, render_in_folder,
-                             run_checks)
+from analytic_checks import EVERY_SAMPLE_SHADED, expect, frames_main
 
 SHADERS = {
     # Gathers light at P moved towards the camera (world -z) by `dz` where x > `from_x`.
@@ -170,19 +167,8 @@ def scene_text():
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--gonio", required=True)
-    args = parser.parse_args()
-    gonio = os.path.abspath(args.gonio)
-    with tempfile.TemporaryDirectory(prefix="gonio_light_env_") as folder:
-        make_environment(folder)
-        failure = render_in_folder(gonio, folder, SHADERS, scene_text())
-        if failure:
-            print(failure)
-            return 1
-        paths = [os.path.join(folder, name + ".exr") for name in FRAMES]
-        images = dict(zip(FRAMES, read_images(*paths)))
-        return run_checks(CHECKS, images)
+    return frames_main(__doc__.splitlines()[0], "gonio_light_env_", SHADERS, scene_text(),
+                       {name: name + ".exr" for name in FRAMES}, CHECKS, make_environment)
 
 
 if __name__ == "__main__":
