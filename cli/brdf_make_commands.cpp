@@ -1,8 +1,12 @@
 // `gonio brdf synth | merge | opt | iopt`: photon maps made and combined, and turned into
 // optimised splat grids (thesis GPBRDFOpt, GPIBRDFOpt).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "base/limits.h"
 #include "brdf_cli.h"
@@ -49,42 +53,105 @@ void AddSynth(CLI::App& brdf, int* exitCode) {
     });
 }
 
+// The bounce counts `--bounces` keeps: "N" or "N:M" (inclusive).
+struct BounceRange {
+    std::uint32_t low = 0, high = kMaxBounces;
+};
+
+BounceRange ParseBounceRange(const std::string& text) {
+    BounceRange range;
+    const std::size_t colon = text.find(':');
+    try {
+        std::size_t used = 0;
+        range.low = static_cast<std::uint32_t>(std::stoul(text.substr(0, colon), &used));
+        if (used != std::min(colon, text.size())) throw std::invalid_argument(text);
+        range.high = range.low;
+        if (colon != std::string::npos) {
+            range.high = static_cast<std::uint32_t>(std::stoul(text.substr(colon + 1), &used));
+            if (used != text.size() - colon - 1) throw std::invalid_argument(text);
+        }
+    } catch (const std::logic_error&) {
+        throw UsageError("--bounces: expected N or N:M (bounce counts), got '" + text + "'");
+    }
+    if (range.low > range.high)
+        throw UsageError("--bounces: expected N <= M in N:M, got '" + text + "'");
+    return range;
+}
+
+// Calls `photon(rows, bounces)` for every batch of every input, checking that all have the same
+// number of colour values (`ncomps` on return).
+template <typename Photons>
+void ForEachBatch(const std::vector<std::string>& inputs, int* ncomps, Photons photons) {
+    *ncomps = 0;
+    for (const std::string& path : inputs) {
+        PhotonMapReader reader(path);
+        std::vector<float> rows;
+        std::vector<std::uint16_t> bounces;
+        bool more = true;
+        while (more) {
+            rows.clear();
+            bounces.clear();
+            more = reader.ReadBatch(1 << 18, rows, &bounces);
+            if (rows.empty()) continue;
+            if (*ncomps == 0) {
+                *ncomps = reader.NumComponents();
+            } else if (reader.NumComponents() != *ncomps) {
+                throw PhotonMapError(path + ": " + std::to_string(reader.NumComponents()) +
+                                     " colour values per photon, the maps before have " +
+                                     std::to_string(*ncomps));
+            }
+            photons(rows, bounces);
+        }
+    }
+}
+
 void AddMerge(CLI::App& brdf, int* exitCode) {
     auto* cmd = brdf.add_subcommand("merge", "combine photon maps of several runs into one");
     auto inputs = std::make_shared<std::vector<std::string>>();
     auto out = std::make_shared<std::string>();
+    auto bounces = std::make_shared<std::string>();
     cmd->add_option("INPUTS", *inputs, "photon maps (.pm)")->required()->expected(1, -1);
     cmd->add_option("-o,--output", *out, "output photon map (.pm)")->required();
+    cmd->add_option("--bounces", *bounces,
+                    "keep only photons scattered N times (N:M: N to M times); the inputs need "
+                    "bounce tags, and every traced path still counts");
     cmd->callback([=] {
         *exitCode = RunGuarded("merge", [&] {
+            const bool select = !bounces->empty();
+            const BounceRange range = select ? ParseBounceRange(*bounces) : BounceRange{};
             PhotonMapHeader total;
+            total.bounces = true;
             for (const std::string& path : *inputs) {
                 const PhotonMapHeader header = ReadPhotonMapHeader(path);
                 total.count += header.count;
                 total.paths += header.paths;
-            }
-            std::unique_ptr<PhotonMapWriter> writer;
-            int ncomps = 0;
-            for (const std::string& path : *inputs) {
-                PhotonMapReader reader(path);
-                std::vector<float> rows;
-                bool more = true;
-                while (more) {
-                    rows.clear();
-                    more = reader.ReadBatch(1 << 18, rows);
-                    if (rows.empty()) continue;
-                    if (!writer) {
-                        ncomps = reader.NumComponents();
-                        writer = std::make_unique<PhotonMapWriter>(*out, total, ncomps);
-                    } else if (reader.NumComponents() != ncomps) {
-                        throw PhotonMapError(path + ": " + std::to_string(reader.NumComponents()) +
-                                             " colour values per photon, the maps before have " +
-                                             std::to_string(ncomps));
-                    }
-                    const int stride = kFirstColour + ncomps;
-                    for (std::size_t i = 0; i < rows.size(); i += stride) writer->Append(&rows[i]);
+                total.bounces &= header.bounces;
+                if (select && !header.bounces) {
+                    throw UsageError(path +
+                                     ": --bounces needs bounce tags (trace with Option "
+                                     "\"BRDFLight\" \"integer bounces\" 1)");
                 }
             }
+            auto kept = [&](std::uint16_t b) { return b >= range.low && b <= range.high; };
+            int ncomps = 0;
+            if (select) {  // the count leads the file: a first pass counts the kept photons
+                total.count = 0;
+                ForEachBatch(*inputs, &ncomps,
+                             [&](const std::vector<float>&, const std::vector<std::uint16_t>& b) {
+                                 total.count += std::count_if(b.begin(), b.end(), kept);
+                             });
+            }
+            std::unique_ptr<PhotonMapWriter> writer;
+            ForEachBatch(
+                *inputs, &ncomps,
+                [&](const std::vector<float>& rows, const std::vector<std::uint16_t>& tags) {
+                    if (!writer) writer = std::make_unique<PhotonMapWriter>(*out, total, ncomps);
+                    const int stride = kFirstColour + ncomps;
+                    for (std::size_t i = 0; i * stride < rows.size(); ++i) {
+                        const std::uint16_t b = tags.empty() ? 0 : tags[i];
+                        if (!select || kept(b)) writer->Append(&rows[i * stride], b);
+                    }
+                });
             if (!writer) throw PhotonMapError("the photon maps hold no photons");
             writer->Close();
             std::printf("%s: %llu photons of %llu paths from %zu maps\n", out->c_str(),
