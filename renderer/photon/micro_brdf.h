@@ -60,7 +60,10 @@ struct MicroBrdf {
 // kd, ks and the exponent of a primitive: its surface shader instance's Kd, Ks and exponent (or
 // 1/roughness), as the RIB sets them or as the shader declares them by default (a parameter
 // the shader lacks is 0), then `Attribute "brdflight"`. A shader with neither Kd nor Ks is
-// reported once and taken as matte (Kd 1).
+// reported once and taken as matte (Kd 1). `Attribute "brdflight" "string model" "leaf"` makes
+// it the leaf model instead, from that attribute's eta, roughness, reflectance and
+// transmittance (docs/brdflight.md); a value out of range, or another model, is an error at
+// its parameter and leaves the Phong model.
 MicroBrdf MicroBrdfFromShader(const sl::ShaderInstance& surface, const Attributes& attributes,
                               Diagnostics& diagnostics);
 

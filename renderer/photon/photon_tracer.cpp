@@ -9,10 +9,13 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
+#include <utility>
 
 #include "base/math.h"
 #include "base/progress.h"
 #include "base/random.h"
+#include "renderer/photon/leaf_optics.h"
 #include "renderer/photon/row_angles.h"
 #include "renderer/photon/scene_bounds.h"
 #include "renderer/shading/frame_shaders.h"
@@ -251,6 +254,20 @@ void Accumulate(const PhotonStats& from, PhotonStats* to) {
     }
 }
 
+// A leaf's reflectance and transmittance hold one value or one per colour component.
+void CheckLeafColours(const LeafOptics& leaf, const ParamDict& params, int ncomps,
+                      Diagnostics& diagnostics) {
+    const LeafParams& p = leaf.Params();
+    for (const auto& [name, values] :
+         {std::pair{"reflectance", &p.reflectance}, std::pair{"transmittance", &p.transmittance}}) {
+        if (values->size() == 1 || int(values->size()) == ncomps) continue;
+        diagnostics.Error(params.Location(name), std::string("Attribute \"brdflight\" \"") + name +
+                                                     "\": expected 1 or " + std::to_string(ncomps) +
+                                                     " values (the colour components), got " +
+                                                     std::to_string(values->size()));
+    }
+}
+
 }  // namespace
 
 MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics) {
@@ -268,6 +285,10 @@ MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics)
                                Declarations(), frame.options, diagnostics);
         const MicroBrdf brdf =
             surface ? MicroBrdfFromShader(*surface, attributes, diagnostics) : MicroBrdf{};
+        if (brdf.leaf) {
+            CheckLeafColours(*brdf.leaf, attributes.user.at("brdflight"),
+                             frame.options.colorComponents, diagnostics);
+        }
         return byState.emplace(&attributes, brdf).first->second;
     };
     MicroBrdfTable table;

@@ -59,6 +59,9 @@ expect_error leafeta 'leafeta.rib:3:[0-9]*: error: Attribute "brdflight" "eta": 
 expect_error leafenergy 'error: Attribute "brdflight" "transmittance": expected reflectance and transmittance' \
     'Option "BRDFLight" "string texturename" "leafenergy.pm" "integer rays" 1000' \
     "$(LEAF_PLANE '"color reflectance" [0.5 0.5 0.5] "color transmittance" [0.2 0.6 0.2]')"
+expect_error leafcolours 'error: Attribute "brdflight" "reflectance": expected 1 or 3 values' \
+    'Option "BRDFLight" "string texturename" "leafcolours.pm" "integer rays" 1000' \
+    "$(LEAF_PLANE '"float reflectance" [0.1 0.2]')"
 
 # Bounce tags: a leaf sheet over a matte ground, tagged; merge --bounces keeps the photons
 # scattered once (the sheet's reflection), and every traced path still counts.
