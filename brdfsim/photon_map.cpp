@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <string_view>
 
 #include "base/limits.h"
 #include "base/math.h"
@@ -56,6 +57,7 @@ std::string CheckPhoton(const float* row, int stride) {
 
 struct PhotonMapReader::Piece {
     std::vector<float> rows;
+    std::vector<std::uint16_t> bounces;
     std::uint64_t lines = 0;
     std::uint64_t errorLine = 0;  // 1-based within the piece; 0 if none
     std::string error;
@@ -85,7 +87,13 @@ std::uint64_t PhotonMapReader::ParseHeaderLine(const std::string& line) {
     while (true) {
         while (p < end && IsBlank(*p)) ++p;
         if (p >= end) break;
-        if (n == 2) {  // a third number: not a photon map header
+        if (n == 2) {  // a third word: the bounce tag, or not a photon map header
+            const std::string_view word(p, end - p);
+            if (word.substr(0, 7) == "bounces" &&
+                word.find_first_not_of(" \t\r", 7) == std::string_view::npos) {
+                header_.bounces = true;
+                break;
+            }
             n = -1;
             break;
         }
@@ -100,7 +108,8 @@ std::uint64_t PhotonMapReader::ParseHeaderLine(const std::string& line) {
     if (n != 1 && n != 2) {
         throw PhotonMapError(path_ +
                              ":1: expected the photon count (optionally followed by the number "
-                             "of traced paths) on the first line; is this a photon map?");
+                             "of traced paths and the word bounces) on the first line; is this a "
+                             "photon map?");
     }
     header_.paths = n == 2 ? numbers[1] : numbers[0];
     if (header_.paths < numbers[0]) {
@@ -110,7 +119,9 @@ std::uint64_t PhotonMapReader::ParseHeaderLine(const std::string& line) {
     return numbers[0];
 }
 
-void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vector<float>& rows) {
+void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vector<float>& rows,
+                                  std::vector<std::uint16_t>* bounces) {
+    const int tag = header_.bounces ? 1 : 0;  // the bounce column after the colours
     if (ncomps_ == 0) {  // the first photon line fixes the number of colour values
         const char* p = begin;
         std::uint64_t line = lineNumber_ + 1;
@@ -126,22 +137,24 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
             if (n < 0) {
                 throw PhotonMapError(path_ + ":" + std::to_string(line) + ": expected numbers");
             }
-            if (n < kFirstColour + 1) {
+            if (n < kFirstColour + 1 + tag) {
                 throw PhotonMapError(path_ + ":" + std::to_string(line) +
                                      ": expected theta_in phi_in theta_out phi_out probability "
-                                     "and at least one colour value");
+                                     "and at least one colour value" +
+                                     (tag ? " and the bounce count" : ""));
             }
-            if (n - kFirstColour > kMaxColorComponents) {
+            if (n - kFirstColour - tag > kMaxColorComponents) {
                 throw PhotonMapError(path_ + ":" + std::to_string(line) + ": expected at most " +
                                      std::to_string(kMaxColorComponents) + " colour values, got " +
-                                     std::to_string(n - kFirstColour));
+                                     std::to_string(n - kFirstColour - tag));
             }
-            ncomps_ = n - kFirstColour;
+            ncomps_ = n - kFirstColour - tag;
             break;
         }
         if (ncomps_ == 0) return;
     }
     const int stride = kFirstColour + ncomps_;
+    const int fileStride = stride + tag;
     const std::size_t bytes = end - begin;
     const int numPieces = static_cast<int>(std::clamp<std::size_t>(bytes >> 18, 1, 16));
     std::vector<const char*> cuts(numPieces + 1, end);
@@ -155,15 +168,16 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
     tbb::parallel_for(0, numPieces, [&](int i) {
         Piece& piece = pieces_[i];
         piece.rows.clear();
+        piece.bounces.clear();
         piece.lines = 0;
         piece.errorLine = 0;
         piece.error.clear();
         piece.rows.reserve((cuts[i + 1] - cuts[i]) / (stride * 8) + 16);
-        std::vector<float> row(stride);
+        std::vector<float> row(fileStride);
         const char* p = cuts[i];
         while (p < cuts[i + 1]) {
             ++piece.lines;
-            const int n = ParseNumbers(p, cuts[i + 1], row.data(), stride);
+            const int n = ParseNumbers(p, cuts[i + 1], row.data(), fileStride);
             if (n == 0) {  // a blank line
                 ++p;
                 continue;
@@ -171,19 +185,23 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
             std::string error;
             if (n < 0) {
                 error = "expected numbers";
-            } else if (n != stride) {
-                error = "expected " + std::to_string(stride) + " values (5 + " +
-                        std::to_string(ncomps_) + " colours, as on the first photon line), got " +
-                        std::to_string(n);
+            } else if (n != fileStride) {
+                error = "expected " + std::to_string(fileStride) + " values (5 + " +
+                        std::to_string(ncomps_) + " colours" + (tag ? " + the bounce count" : "") +
+                        ", as on the first photon line), got " + std::to_string(n);
             } else {
                 error = CheckPhoton(row.data(), stride);
+                const float b = row[fileStride - 1];
+                if (error.empty() && tag && !(b >= 0 && b <= kMaxBounces && b == std::floor(b)))
+                    error = "expected a bounce count, an integer in [0, 65535]";
             }
             if (!error.empty()) {
                 piece.error = error;
                 piece.errorLine = piece.lines;
                 return;
             }
-            piece.rows.insert(piece.rows.end(), row.begin(), row.end());
+            piece.rows.insert(piece.rows.end(), row.begin(), row.begin() + stride);
+            if (tag) piece.bounces.push_back(static_cast<std::uint16_t>(row[stride]));
             ++p;  // past the newline
         }
     });
@@ -208,10 +226,12 @@ void PhotonMapReader::ParsePieces(const char* begin, const char* end, std::vecto
         photonsRead_ += photons;
         lineNumber_ += piece.lines;
         rows.insert(rows.end(), piece.rows.begin(), piece.rows.end());
+        if (bounces) bounces->insert(bounces->end(), piece.bounces.begin(), piece.bounces.end());
     }
 }
 
-bool PhotonMapReader::ReadBatch(std::size_t maxPhotons, std::vector<float>& rows) {
+bool PhotonMapReader::ReadBatch(std::size_t maxPhotons, std::vector<float>& rows,
+                                std::vector<std::uint16_t>* bounces) {
     if (eof_) return false;
     const std::size_t before = rows.size();
     if (buffer_.empty()) buffer_.resize(2 * kChunkBytes);
@@ -229,7 +249,7 @@ bool PhotonMapReader::ReadBatch(std::size_t maxPhotons, std::vector<float>& rows
             while (cut > begin && cut[-1] != '\n') --cut;
             if (cut == begin) throw PhotonMapError(path_ + ": a line longer than 8 MB");
         }
-        ParsePieces(begin, cut, rows);
+        ParsePieces(begin, cut, rows, bounces);
         carry_ = end - cut;
         std::memmove(buffer_.data(), cut, carry_);
     }
@@ -245,7 +265,7 @@ PhotonMap ReadPhotonMap(const std::string& path) {
     PhotonMapReader reader(path);
     PhotonMap map;
     map.paths = reader.Header().paths;
-    while (reader.ReadBatch(1 << 20, map.rows)) {
+    while (reader.ReadBatch(1 << 20, map.rows, &map.bounces)) {
     }
     map.ncomps = reader.NumComponents();
     return map;
@@ -264,7 +284,8 @@ PhotonMapWriter::PhotonMapWriter(const std::string& path, const PhotonMapHeader&
     file_ = std::fopen(tempPath_.c_str(), "wb");
     if (!file_) throw PhotonMapIoError(tempPath_ + ": cannot write: " + std::strerror(errno));
     std::string first = std::to_string(header.count);
-    if (header.paths != header.count) first += " " + std::to_string(header.paths);
+    if (header.paths != header.count || header.bounces) first += " " + std::to_string(header.paths);
+    if (header.bounces) first += " bounces";
     first += "\n";
     buffer_.assign(first.begin(), first.end());
 }
@@ -276,13 +297,19 @@ PhotonMapWriter::~PhotonMapWriter() {
     }
 }
 
-void PhotonMapWriter::Append(const float* row) {
+void PhotonMapWriter::Append(const float* row, std::uint16_t bounces) {
     char text[32];
     const int stride = kFirstColour + ncomps_;
     for (int i = 0; i < stride; ++i) {
         const auto result = std::to_chars(text, text + sizeof text, row[i]);
         buffer_.insert(buffer_.end(), text, result.ptr);
         buffer_.push_back(i + 1 < stride ? ' ' : '\n');
+    }
+    if (header_.bounces) {
+        buffer_.back() = ' ';
+        const auto result = std::to_chars(text, text + sizeof text, bounces);
+        buffer_.insert(buffer_.end(), text, result.ptr);
+        buffer_.push_back('\n');
     }
     ++written_;
     if (buffer_.size() > (1 << 20)) {
@@ -308,8 +335,12 @@ void PhotonMapWriter::Close() {
 }
 
 void WritePhotonMap(const std::string& path, const PhotonMap& map) {
-    PhotonMapWriter writer(path, {map.Size(), map.paths}, map.ncomps);
-    for (std::size_t i = 0; i < map.Size(); ++i) writer.Append(map.Row(i));
+    const bool tagged = !map.bounces.empty();
+    if (tagged && map.bounces.size() != map.Size())
+        throw PhotonMapError(path + ": bounce counts for some photons only");
+    PhotonMapWriter writer(path, {map.Size(), map.paths, tagged}, map.ncomps);
+    for (std::size_t i = 0; i < map.Size(); ++i)
+        writer.Append(map.Row(i), tagged ? map.bounces[i] : 0);
     writer.Close();
 }
 

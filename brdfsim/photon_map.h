@@ -2,7 +2,9 @@
 // Photon maps (thesis Appendix C.2): an ASCII file whose first line holds the photon count, then
 // one photon per line: theta_in phi_in theta_out phi_out probability c1 ... cn (radians). The
 // first line may carry a second number, the traced paths (photons that escaped downwards or were
-// lost count there but have no line); the estimator divides by it. docs/formats.md has the rules.
+// lost count there but have no line); the estimator divides by it. A third word `bounces` there
+// says every line ends with one more integer, the surface hits of the photon's path (1: once
+// scattered), which the in-memory rows keep apart. docs/formats.md has the rules.
 
 #include <cstdint>
 #include <cstdio>
@@ -31,13 +33,17 @@ enum PhotonColumn { kThetaIn = 0, kPhiIn, kThetaOut, kPhiOut, kProbability, kFir
 struct PhotonMapHeader {
     std::uint64_t count = 0;  // photon lines
     std::uint64_t paths = 0;  // traced paths, >= count
+    bool bounces = false;     // each line ends with the photon's bounce count
 };
+
+constexpr std::uint32_t kMaxBounces = 65535;  // the largest bounce count a map holds
 
 // Photons in memory as rows of 5 + ncomps floats.
 struct PhotonMap {
     int ncomps = 0;
     std::uint64_t paths = 0;
     std::vector<float> rows;
+    std::vector<std::uint16_t> bounces;  // one per row for a tagged map, else empty
 
     int Stride() const { return kFirstColour + ncomps; }
     std::size_t Size() const { return ncomps ? rows.size() / Stride() : 0; }
@@ -56,13 +62,16 @@ class PhotonMapReader {
     const PhotonMapHeader& Header() const { return header_; }
     // Colour values per photon; known after the first batch (0 before, or for an empty map).
     int NumComponents() const { return ncomps_; }
-    // Appends up to about `maxPhotons` rows to `rows`; returns false once the file is exhausted
-    // (after checking that the photon count matches the header).
-    bool ReadBatch(std::size_t maxPhotons, std::vector<float>& rows);
+    // Appends up to about `maxPhotons` rows to `rows` (and, for a tagged map, their bounce
+    // counts to `bounces` when given); returns false once the file is exhausted (after
+    // checking that the photon count matches the header).
+    bool ReadBatch(std::size_t maxPhotons, std::vector<float>& rows,
+                   std::vector<std::uint16_t>* bounces = nullptr);
 
   private:
     struct Piece;
-    void ParsePieces(const char* begin, const char* end, std::vector<float>& rows);
+    void ParsePieces(const char* begin, const char* end, std::vector<float>& rows,
+                     std::vector<std::uint16_t>* bounces);
     std::uint64_t ParseHeaderLine(const std::string& line);
 
     std::string path_;
@@ -89,7 +98,8 @@ class PhotonMapWriter {
     PhotonMapWriter(const PhotonMapWriter&) = delete;
     PhotonMapWriter& operator=(const PhotonMapWriter&) = delete;
 
-    void Append(const float* row);
+    // `bounces` is written for a tagged header and ignored otherwise.
+    void Append(const float* row, std::uint16_t bounces = 0);
     void Close();
 
   private:

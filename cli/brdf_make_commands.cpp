@@ -1,8 +1,12 @@
 // `gonio brdf synth | merge | opt | iopt`: photon maps made and combined, and turned into
 // optimised splat grids (thesis GPBRDFOpt, GPIBRDFOpt).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "base/limits.h"
 #include "brdf_cli.h"
@@ -50,15 +54,42 @@ void AddSynth(CLI::App& brdf, int* exitCode) {
     });
 }
 
+// The bounce counts `--bounces` keeps: "N" or "N:M" (inclusive).
+BounceRange ParseBounceRange(const std::string& text) {
+    BounceRange range;
+    const std::size_t colon = text.find(':');
+    try {
+        std::size_t used = 0;
+        range.low = static_cast<std::uint32_t>(std::stoul(text.substr(0, colon), &used));
+        if (used != std::min(colon, text.size())) throw std::invalid_argument(text);
+        range.high = range.low;
+        if (colon != std::string::npos) {
+            range.high = static_cast<std::uint32_t>(std::stoul(text.substr(colon + 1), &used));
+            if (used != text.size() - colon - 1) throw std::invalid_argument(text);
+        }
+    } catch (const std::logic_error&) {
+        throw UsageError("--bounces: expected N or N:M (bounce counts), got '" + text + "'");
+    }
+    if (range.low > range.high)
+        throw UsageError("--bounces: expected N <= M in N:M, got '" + text + "'");
+    return range;
+}
+
 void AddMerge(CLI::App& brdf, int* exitCode) {
     auto* cmd = brdf.add_subcommand("merge", "combine photon maps of several runs into one");
     auto inputs = std::make_shared<std::vector<std::string>>();
     auto out = std::make_shared<std::string>();
+    auto bounces = std::make_shared<std::string>();
     cmd->add_option("INPUTS", *inputs, "photon maps (.pm)")->required()->expected(1, -1);
     cmd->add_option("-o,--output", *out, "output photon map (.pm)")->required();
+    cmd->add_option("--bounces", *bounces,
+                    "keep only photons scattered N times (N:M: N to M times); the inputs need "
+                    "bounce tags, and every traced path still counts");
     cmd->callback([=] {
         *exitCode = RunGuarded("merge", [&] {
-            const PhotonMapHeader total = MergePhotonMaps(*inputs, *out);
+            const BounceRange range = bounces->empty() ? BounceRange{} : ParseBounceRange(*bounces);
+            const PhotonMapHeader total =
+                MergePhotonMaps(*inputs, *out, bounces->empty() ? nullptr : &range);
             std::printf("%s: %llu photons of %llu paths from %zu maps\n", out->c_str(),
                         static_cast<unsigned long long>(total.count),
                         static_cast<unsigned long long>(total.paths), inputs->size());

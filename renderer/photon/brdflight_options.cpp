@@ -34,6 +34,7 @@ bool ReadBrdfLightOptions(const Frame& frame, Diagnostics& diagnostics, BrdfLigh
     o.isotropic = params.GetNumber("isotropic", 0) != 0;
     o.averageAzimuth = params.GetNumber("averageazimuth", 0) != 0;
     o.periodic = params.GetNumber("periodic", 0) != 0;
+    o.bounces = params.GetNumber("bounces", 0) != 0;
     double rays = double(o.rays), area = o.area, seed = -1, maxDepth = o.maxDepth;
     double thetaMin = o.thetaMin, thetaMax = o.thetaMax;
     bool ok = ReadNumber(

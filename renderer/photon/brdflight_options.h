@@ -21,6 +21,7 @@ struct BrdfLightOptions {
     uint64_t seed = 0;
     int maxDepth = 100;  // bounces
     bool periodic = false;
+    bool bounces = false;               // tag every photon of the map with its bounce count
     float thetaMin = 0, thetaMax = 90;  // incidence range, degrees
     FileLoc loc;                        // of the first BRDFLight parameter, for messages
 };

@@ -32,13 +32,14 @@ bool CheckWritable(const std::string& path, const FileLoc& loc, Diagnostics& dia
     return true;
 }
 
-bool WriteMap(const std::string& path, const PhotonTraceResult& result, const FileLoc& loc,
-              Diagnostics& diagnostics) {
+bool WriteMap(const std::string& path, const PhotonTraceResult& result, bool bounces,
+              const FileLoc& loc, Diagnostics& diagnostics) {
     try {
         const uint64_t count = result.stats.escapedUp;
-        PhotonMapWriter writer(path, {count, result.stats.paths}, result.ncomps);
+        PhotonMapWriter writer(path, {count, result.stats.paths, bounces}, result.ncomps);
         const size_t stride = kFirstColour + result.ncomps;
-        for (size_t i = 0; i < count; ++i) writer.Append(result.rows.data() + i * stride);
+        for (size_t i = 0; i < count; ++i)
+            writer.Append(result.rows.data() + i * stride, result.bounces[i]);
         writer.Close();
         return true;
     } catch (const std::exception& e) {
@@ -108,7 +109,9 @@ bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagno
     if (!PhotonsFitInMemory(frame, options, shard.count, diagnostics)) return true;
 
     const RayScene scene(frame, diagnostics, RayScene::Traversal::kFast);
+    const int errors = diagnostics.ErrorCount();
     const MicroBrdfTable brdfs = BuildMicroBrdfTable(frame, diagnostics);
+    if (diagnostics.ErrorCount() > errors) return true;  // a bad micro BRDF: nothing traced
     PhotonTraceSettings trace;
     trace.paths = shard.count;
     trace.firstPath = shard.first;
@@ -123,7 +126,7 @@ bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagno
     trace.progress = settings.progress || ::isatty(STDERR_FILENO);
     const PhotonTraceResult result = TracePhotons(frame, scene, brdfs, trace);
     if (stats) *stats = result.stats;
-    if (!WriteMap(output, result, options.loc, diagnostics)) return false;
+    if (!WriteMap(output, result, options.bounces, options.loc, diagnostics)) return false;
     std::fprintf(stderr, "%s\n", PhotonSummary(output, result.stats).c_str());
     return true;
 }

@@ -9,10 +9,13 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
+#include <utility>
 
 #include "base/math.h"
 #include "base/progress.h"
 #include "base/random.h"
+#include "renderer/photon/leaf_optics.h"
 #include "renderer/photon/row_angles.h"
 #include "renderer/photon/scene_bounds.h"
 #include "renderer/shading/frame_shaders.h"
@@ -100,6 +103,7 @@ V3f BeamOrigin(const TraceContext& c, const V3f& x, const V3f& wIn) {
 // buffer (room for every path to escape), compacted in path order once all batches are done.
 struct Batch {
     float* rows = nullptr;
+    uint16_t* bounces = nullptr;  // one per row
     size_t values = 0;
     PhotonStats stats;
 };
@@ -136,7 +140,7 @@ class PathTracer {
             org = sp_.P + c_.offset * FacingNormal(sp_.Ng, wo);
             dir = wo;
             const Segment next = TraceSegment(c_, org, dir, &hit);
-            if (next == Segment::Escaped) return Escape(thetaIn, phiIn, pIn, wo);
+            if (next == Segment::Escaped) return Escape(thetaIn, phiIn, pIn, wo, depth);
             if (next == Segment::Stuck || depth >= c_.settings.maxDepth) {
                 ++out_.stats.bounceLimit;
                 return;
@@ -170,7 +174,9 @@ class PathTracer {
     static V3f FacingNormal(const V3f& n, const V3f& w) { return n.dot(w) < 0 ? -n : n; }
 
     // Samples the micro BRDF at sp for light arriving from wi and multiplies β by f cos/pdf;
-    // returns 0 when the photon is absorbed (sampled into the surface, or β vanished).
+    // returns 0 when the photon is absorbed (sampled into an opaque surface, or β vanished).
+    // A leaf's transmitted photon leaves on the far side: the caller offsets its origin along
+    // the geometric normal on the side of ωo.
     V3f Scatter(const LeanSurfacePoint& sp, const V3f& wi, PathRandom& random) {
         const MicroBrdf& brdf = BrdfOf(sp.shape);
         // Surfaces reflect on the side the photon arrives from (thin blades are two-sided).
@@ -178,20 +184,27 @@ class PathTracer {
         const V3f n = FacingNormal(sp.N, ng);
         const float u0 = random.Next(), u1 = random.Next(), u2 = random.Next();
         const auto [wo, value] = brdf.Sample(n, wi, u0, u1, u2);
-        const float cosOut = n.dot(wo);
-        if (wo.dot(ng) <= 0 || cosOut <= 0 || !(value.pdf > 0)) return V3f(0);
+        const float cosOut = std::abs(n.dot(wo)), side = wo.dot(ng);
+        // Through the surface (both normals agree) is transmission for a leaf, absorption for
+        // Phong; shading and geometric normals that disagree about the side absorb.
+        const bool through = n.dot(wo) < 0;
+        if (side == 0 || through != (side < 0) || (through && !brdf.Transmits()) || cosOut <= 0 ||
+            !(value.pdf > 0)) {
+            return V3f(0);
+        }
         bool alive = false;
         for (int k = 0; k < c_.ncomps; ++k) {
             const float cs = k < int(sp.Cs.size()) ? sp.Cs[k] : 1.0f;
-            beta_[k] *= (brdf.kd * cs / kPiF + value.specular) * cosOut / value.pdf;
+            beta_[k] *= brdf.Component(value, k, cs) * cosOut / value.pdf;
             alive |= beta_[k] > 0;
         }
         return alive ? wo : V3f(0);
     }
 
-    void Escape(float thetaIn, float phiIn, float pIn, const V3f& wo) {
+    void Escape(float thetaIn, float phiIn, float pIn, const V3f& wo, int depth) {
         if (wo.z <= 0) {
             ++out_.stats.escapedDown;
+            for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyDown[k] += beta_[k];
             return;
         }
         ++out_.stats.escapedUp;
@@ -205,6 +218,8 @@ class PathTracer {
         row[0] = thetaIn, row[1] = phiIn, row[2] = PolarAngle(wo.z);
         row[3] = phiOut, row[4] = pIn;
         std::copy(beta_.begin(), beta_.end(), row + kFirstColumns);
+        out_.bounces[out_.values / (kFirstColumns + c_.ncomps)] =
+            static_cast<uint16_t>(std::min(depth, int(kMaxBounceTag)));
         out_.values += kFirstColumns + c_.ncomps;
         for (int k = 0; k < c_.ncomps; ++k) out_.stats.energyUp[k] += beta_[k];
     }
@@ -233,7 +248,24 @@ void Accumulate(const PhotonStats& from, PhotonStats* to) {
     to->bounceLimit += from.bounceLimit;
     to->absorbed += from.absorbed;
     to->bounces += from.bounces;
-    for (size_t k = 0; k < to->energyUp.size(); ++k) to->energyUp[k] += from.energyUp[k];
+    for (size_t k = 0; k < to->energyUp.size(); ++k) {
+        to->energyUp[k] += from.energyUp[k];
+        to->energyDown[k] += from.energyDown[k];
+    }
+}
+
+// A leaf's reflectance and transmittance hold one value or one per colour component.
+void CheckLeafColours(const LeafOptics& leaf, const ParamDict& params, int ncomps,
+                      Diagnostics& diagnostics) {
+    const LeafParams& p = leaf.Params();
+    for (const auto& [name, values] :
+         {std::pair{"reflectance", &p.reflectance}, std::pair{"transmittance", &p.transmittance}}) {
+        if (values->size() == 1 || int(values->size()) == ncomps) continue;
+        diagnostics.Error(params.Location(name), std::string("Attribute \"brdflight\" \"") + name +
+                                                     "\": expected 1 or " + std::to_string(ncomps) +
+                                                     " values (the colour components), got " +
+                                                     std::to_string(values->size()));
+    }
 }
 
 }  // namespace
@@ -253,6 +285,10 @@ MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics)
                                Declarations(), frame.options, diagnostics);
         const MicroBrdf brdf =
             surface ? MicroBrdfFromShader(*surface, attributes, diagnostics) : MicroBrdf{};
+        if (brdf.leaf) {
+            CheckLeafColours(*brdf.leaf, attributes.user.at("brdflight"),
+                             frame.options.colorComponents, diagnostics);
+        }
         return byState.emplace(&attributes, brdf).first->second;
     };
     MicroBrdfTable table;
@@ -265,7 +301,7 @@ MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics)
 }
 
 double PhotonTraceBytes(uint64_t paths, int ncomps) {
-    return double(paths) * double(kFirstColumns + ncomps) * sizeof(float);
+    return double(paths) * (double(kFirstColumns + ncomps) * sizeof(float) + sizeof(uint16_t));
 }
 
 PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
@@ -294,6 +330,7 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
     result.ncomps = c.ncomps;
     const size_t stride = kFirstColumns + c.ncomps;
     result.rows.resize(settings.paths * stride);
+    result.bounces.resize(settings.paths);
     const uint64_t numBatches = (settings.paths + kBatch - 1) / kBatch;
     std::vector<Batch> batches(numBatches);
     Progress progress("BRDFLight", settings.paths, settings.progress);
@@ -302,7 +339,9 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
         // cache lines, and two threads bumping them per path cost about 5% on two cores.
         Batch batch;
         batch.stats.energyUp.assign(c.ncomps, 0.0);
+        batch.stats.energyDown.assign(c.ncomps, 0.0);
         batch.rows = result.rows.data() + b * kBatch * stride;
+        batch.bounces = result.bounces.data() + b * kBatch;
         PathTracer tracer(c, batch);
         const uint64_t first = b * kBatch, last = std::min(settings.paths, first + kBatch);
         for (uint64_t path = first; path < last; ++path) tracer.Trace(settings.firstPath + path);
@@ -313,13 +352,17 @@ PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,
 
     result.stats.paths = settings.paths;
     result.stats.energyUp.assign(c.ncomps, 0.0);
+    result.stats.energyDown.assign(c.ncomps, 0.0);
     size_t values = 0;
     for (const Batch& batch : batches) {  // slices only move down: copying forwards is safe
         std::copy(batch.rows, batch.rows + batch.values, result.rows.data() + values);
+        const size_t photons = batch.values / stride;
+        std::copy(batch.bounces, batch.bounces + photons, result.bounces.data() + values / stride);
         values += batch.values;
         Accumulate(batch.stats, &result.stats);
     }
     result.rows.resize(values);
+    result.bounces.resize(values / stride);
     result.stats.threads = static_cast<int>(std::min<size_t>(
         tbb::this_task_arena::max_concurrency(),
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));

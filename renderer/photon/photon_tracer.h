@@ -18,6 +18,8 @@
 
 namespace gonio {
 
+constexpr int kMaxBounceTag = 65535;
+
 struct PhotonTraceSettings {
     uint64_t paths = 100000;
     // The index of the first path: a run traces paths [firstPath, firstPath + paths). Each
@@ -48,6 +50,7 @@ struct PhotonStats {
     uint64_t absorbed = 0;         // scattered into the surface (the Phong lobe below the horizon)
     uint64_t bounces = 0;          // surface hits over all paths
     std::vector<double> energyUp;  // Σ β of the escaped photons, per component
+    std::vector<double> energyDown;  // Σ β of the photons that left below the horizon
     double seconds = 0;
     int threads = 1;
 
@@ -57,6 +60,9 @@ struct PhotonStats {
 struct PhotonTraceResult {
     int ncomps = 3;
     std::vector<float> rows;  // 5 + ncomps floats per photon, in path order
+    // Per photon (row): the surface hits of its path, 1 for once scattered (capped at
+    // kMaxBounceTag); the photon map's bounce column (docs/formats.md).
+    std::vector<uint16_t> bounces;
     PhotonStats stats;
 };
 
@@ -65,9 +71,9 @@ struct PhotonTraceResult {
 using MicroBrdfTable = std::unordered_map<const SceneShape*, MicroBrdf>;
 MicroBrdfTable BuildMicroBrdfTable(const Frame& frame, Diagnostics& diagnostics);
 
-// The memory TracePhotons holds at most: every path's photon row, for `paths` paths of `ncomps`
-// colour components (it keeps the rows in path order, so that a seed gives one map whatever
-// the thread count).
+// The memory TracePhotons holds at most: every path's photon row and bounce tag, for `paths` paths
+// of `ncomps` colour components (it keeps the rows in path order, so that a seed gives one map
+// whatever the thread count).
 double PhotonTraceBytes(uint64_t paths, int ncomps);
 
 PhotonTraceResult TracePhotons(const Frame& frame, const RayScene& scene,

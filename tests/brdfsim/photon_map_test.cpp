@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "brdfsim/synth.h"
 #include "test_util.h"
@@ -99,6 +101,41 @@ TEST(PhotonMap, RejectsMalformedFilesWithLineNumbers) {
     EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0.1 nan\n").find("finite"), std::string::npos);
     EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0.1\n").find("at least one colour"), std::string::npos);
     EXPECT_NE(ErrorOf("1 0\n").find("traced paths"), std::string::npos);
+}
+
+// The bounce tag (docs/formats.md): the word on line 1, one more integer per line, kept apart
+// from the rows; untagged maps read as before, and a tag that is no count is located.
+TEST(PhotonMap, BounceTagsRoundTripApartFromTheRows) {
+    const std::string path = TempPath("tagged.pm");
+    WriteText(path,
+              "2 5 bounces\n0.5 0 0.7 3.1 0.159 0.2 0.3 0.4 1\n1.0 1.5 0.2 0.1 0.159 1 1 1 7\n");
+    const PhotonMap map = ReadPhotonMap(path);
+    ASSERT_EQ(map.Size(), 2u);
+    EXPECT_EQ(map.ncomps, 3);
+    EXPECT_EQ(map.paths, 5u);
+    EXPECT_FLOAT_EQ(map.Row(1)[kFirstColour + 2], 1.0f);
+    EXPECT_EQ(map.bounces, (std::vector<std::uint16_t>{1, 7}));
+    EXPECT_TRUE(ReadPhotonMapHeader(path).bounces);
+    const std::string again = TempPath("tagged2.pm");
+    WritePhotonMap(again, map);
+    std::ifstream in(again);
+    std::string first, second;
+    std::getline(in, first);
+    std::getline(in, second);
+    EXPECT_EQ(first, "2 5 bounces");
+    EXPECT_EQ(second, "0.5 0 0.7 3.1 0.159 0.2 0.3 0.4 1");
+    EXPECT_NE(
+        ErrorOf("1 1 bounces\n0.5 0 0.7 3.1 0.159 0.2 1.5\n").find(":2: expected a bounce count"),
+        std::string::npos);
+    EXPECT_NE(ErrorOf("1 1 bounces\n0.5 0 0.7 3.1 0.159 2\n").find(":2: expected theta_in"),
+              std::string::npos);
+    EXPECT_NE(ErrorOf("1 1 bouncy\n0.5 0 0.7 3.1 0.159 2\n").find(":1: expected the photon count"),
+              std::string::npos);
+    // untagged: the last value is a colour
+    WriteText(path, "1\n0.5 0 0.7 3.1 0.159 0.2 1\n");
+    const PhotonMap plain = ReadPhotonMap(path);
+    EXPECT_EQ(plain.ncomps, 2);
+    EXPECT_TRUE(plain.bounces.empty());
 }
 
 TEST(PhotonMap, MissingFileIsAnIoError) {

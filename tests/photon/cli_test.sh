@@ -46,6 +46,45 @@ expect_error angles "thetamin" \
     'Option "BRDFLight" "string texturename" "angles.pm" "float thetamin" 60 "float thetamax" 30' \
     "$PLANE"
 
+# Leaf optics: bad parameters are located errors and no map.
+LEAF_PLANE() {
+    printf 'WorldBegin\nAttribute "brdflight" "string model" "leaf" %s\nPolygon "P" [-1 -1 0 1 -1 0 1 1 0 -1 1 0]\nWorldEnd\n' "$1"
+}
+expect_error leafmodel 'leafmodel.rib:3:[0-9]*: error: Attribute "brdflight" "model": expected "phong" or "leaf"' \
+    'Option "BRDFLight" "string texturename" "leafmodel.pm" "integer rays" 1000' \
+    "$(LEAF_PLANE '' | sed 's/"leaf"/"leaves"/')"
+expect_error leafeta 'leafeta.rib:3:[0-9]*: error: Attribute "brdflight" "eta": expected a refractive index' \
+    'Option "BRDFLight" "string texturename" "leafeta.pm" "integer rays" 1000' \
+    "$(LEAF_PLANE '"float eta" 0.5')"
+expect_error leafenergy 'error: Attribute "brdflight" "transmittance": expected reflectance and transmittance' \
+    'Option "BRDFLight" "string texturename" "leafenergy.pm" "integer rays" 1000' \
+    "$(LEAF_PLANE '"color reflectance" [0.5 0.5 0.5] "color transmittance" [0.2 0.6 0.2]')"
+expect_error leafcolours 'error: Attribute "brdflight" "reflectance": expected 1 or 3 values' \
+    'Option "BRDFLight" "string texturename" "leafcolours.pm" "integer rays" 1000' \
+    "$(LEAF_PLANE '"float reflectance" [0.1 0.2]')"
+
+# Bounce tags: a leaf sheet over a matte ground, tagged; merge --bounces keeps the photons
+# scattered once (the sheet's reflection), and every traced path still counts.
+{
+    echo 'Option "BRDFLight" "string texturename" "tagged.pm" "integer rays" 20000 "integer bounces" 1'
+    LEAF_PLANE '"float transmittance" 0.4' | sed 's/^WorldEnd$//'
+    echo 'Attribute "brdflight" "string model" "phong"'
+    echo 'Surface "matte"'
+    echo 'Polygon "P" [-9 -9 -0.5 9 -9 -0.5 9 9 -0.5 -9 9 -0.5]'
+    echo 'WorldEnd'
+} > tagged.rib
+"$GONIO" render tagged.rib > tagged.txt 2>&1 || fail "tagged render: $(cat tagged.txt)"
+head -1 tagged.pm | grep -q '^[0-9]* 20000 bounces$' || fail "tagged header: $(head -1 tagged.pm)"
+awk 'NR > 1 && ($9 < 1 || $9 != int($9)) { bad = 1 } END { exit bad }' tagged.pm ||
+    fail "tagged rows: a bounce count that is not a positive integer"
+awk 'NR > 1 && $9 >= 2 { n++ } END { exit n > 0 ? 0 : 1 }' tagged.pm ||
+    fail "tagged rows: no photon came back through the sheet from the ground"
+"$GONIO" brdf merge tagged.pm --bounces 1 -o once.pm > merge.txt 2>&1 || fail "merge --bounces: $(cat merge.txt)"
+once=$(awk 'NR > 1 && $9 == 1 { n++ } END { print n }' tagged.pm)
+[ "$(head -1 once.pm)" = "$once 20000 bounces" ] || fail "merge --bounces header: $(head -1 once.pm), expected $once photons"
+"$GONIO" brdf merge tagged.pm --bounces 2:x -o bad.pm > bad.txt 2>&1 && fail "merge --bounces 2:x succeeded"
+grep -q 'expected N or N:M' bad.txt || fail "merge --bounces 2:x: $(cat bad.txt)"
+
 # The chain on the committed Lambert plane (100,000 photons, isotropic).
 "$GONIO" render "$RIBS/lambert_plane.rib" > render.txt 2>&1 || fail "render: $(cat render.txt)"
 grep -q "100000 photons escaped up" render.txt || fail "summary: $(cat render.txt)"

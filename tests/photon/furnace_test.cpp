@@ -101,8 +101,8 @@ TEST(MicroBrdf, SampledValueIsTheEvaluatedOne) {
     uint64_t state = 11;
     auto next = [&] { return ToUnitFloat(MixBits(state += kSplitMix64Step)); };
     int specularDraws = 0;
-    for (const MicroBrdf brdf : {MicroBrdf{0, 1, 25}, MicroBrdf{0.5f, 0.5f, 10},
-                                 MicroBrdf{0.3f, 0.7f, 1}, MicroBrdf{0.2f, 0.8f, 200}}) {
+    for (const MicroBrdf& brdf : {MicroBrdf{0, 1, 25}, MicroBrdf{0.5f, 0.5f, 10},
+                                  MicroBrdf{0.3f, 0.7f, 1}, MicroBrdf{0.2f, 0.8f, 200}}) {
         for (int i = 0; i < 20000; ++i) {
             const V3f n = FromLocal(V3f(0, 0, 1), 1 - next(), 6.2831853f * next());
             const V3f wi = FromLocal(n, 1 - next(), 6.2831853f * next());
