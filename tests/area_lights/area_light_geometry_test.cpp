@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/math.h"
+#include "renderer/raytrace/shadow_transmission.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
 #include "tests/support/captured_diagnostics.h"
@@ -128,6 +129,32 @@ TEST(AreaLightShapes, ObjectInstancesAreNotLightGeometry) {
     EXPECT_NE(built.messages.find("test.rib:6:1: warning: an object instance is not area light"),
               std::string::npos)
         << built.messages;
+}
+
+TEST(ShadowTransmission, TheWordsOfTheAttribute) {
+    const Built built = Parse(
+        "Sphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"opaque\"\nSphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"transparent\"\nSphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"shader\"\nSphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"glass\"\nSphere 1 -1 1 360\n");
+    ASSERT_EQ(built.frames.size(), 1u);
+    const std::vector<SceneShape>& shapes = built.frames[0].shapes;
+    ASSERT_EQ(shapes.size(), 5u);
+    EXPECT_EQ(TransmissionOf(*shapes[0].attributes), Transmission::Opacity);  // unset: Os
+    EXPECT_EQ(TransmissionOf(*shapes[1].attributes), Transmission::Opaque);
+    EXPECT_EQ(TransmissionOf(*shapes[2].attributes), Transmission::Transparent);
+    EXPECT_EQ(TransmissionOf(*shapes[3].attributes), Transmission::Opacity);
+    EXPECT_EQ(TransmissionOf(*shapes[4].attributes), Transmission::Opacity);
+    EXPECT_NE(built.messages.find("test.rib:9:1: warning: Attribute \"visibility\" "
+                                  "\"transmission\" must be opaque, transparent, Os or shader, "
+                                  "got \"glass\" (taken as Os)"),
+              std::string::npos)
+        << built.messages;
+    // Opacity 1 everywhere and no "transparent": one any-hit ray answers every shadow ray.
+    EXPECT_FALSE(AllShadowsOpaque(built.frames[0]));
+    EXPECT_TRUE(AllShadowsOpaque(Parse("Sphere 1 -1 1 360\n").frames.at(0)));
+    EXPECT_FALSE(AllShadowsOpaque(Parse("Opacity [1 0.5 1]\nSphere 1 -1 1 360\n").frames.at(0)));
 }
 
 TEST(AreaLightGeometry, DiskAreaCentroidAndNormal) {
