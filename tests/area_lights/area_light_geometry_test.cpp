@@ -170,6 +170,13 @@ TEST(AreaLightGeometry, DiskAreaCentroidAndNormal) {
     EXPECT_NEAR(m.maxPdf * light.Area(), 1, 1e-3);
 }
 
+TEST(AreaLightGeometry, AMovingLightWhereItsMotionStarts) {
+    const AreaLightGeometry light = LightOf(
+        "AreaLightSource \"arealight\" 1\n"
+        "MotionBegin [0 1]\n  Translate 0 0 2\n  Translate 5 0 2\nMotionEnd\nDisk 0 1 360\n");
+    ExpectNear(SampleMoments(light, 4096).meanP, V3f(0, 0, 2), 5e-3f, "mean P");
+}
+
 TEST(AreaLightGeometry, PartialDiskSweepCentroid) {
     // A half disk (θ in [0°, 180°]) of radius 1: centroid y = 4/(3π).
     const AreaLightGeometry light = LightOf("AreaLightSource \"arealight\" 1\nDisk 0 1 180\n");
