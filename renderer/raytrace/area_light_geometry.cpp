@@ -79,7 +79,7 @@ void AreaLightGeometry::AddPieceArea(float area) {
 }
 
 void AreaLightGeometry::AddMesh(const TriangleMesh& mesh, const SceneShape& shape) {
-    const M44f& m = shape.worldFromObject;
+    const M44f& m = shape.worldFromObject;  // a moving shape's first placement
     // (Ma × Mb) = det(M)·M⁻ᵀ(a × b): the world cross product is the transformed object normal
     // up to det(M)'s sign.
     const float sign = FlipSign(shape) * (m.determinant() < 0 ? -1.f : 1.f);

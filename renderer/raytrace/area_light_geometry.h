@@ -4,8 +4,8 @@
 // light shader's illuminate runs at such samples (docs/shading-language.md, Area lights); the
 // path tracer samples the same surface for next-event estimation.
 //
-// Shapes, each in the placement the ray tracer gives it at the shutter's opening (static
-// worldFromObject, undeformed positions):
+// Shapes, each where its motion block starts (the first transform of a moving shape, the first
+// positions of a deforming mesh):
 //   * triangle meshes (polygons, patches, NURBS: the triangles that are rendered), exact;
 //   * quadrics, on their true surface: (u, v) cells with |∂P/∂u × ∂P/∂v| linear in v across a
 //     cell, exact for disks, cones and cylinders under a similarity transform (their area

@@ -235,6 +235,19 @@ void SceneBuilder::Attribute(const std::string& name, const ParamList& params, c
     }
     if (name == "identifier") MutableAttributes().identifier = merged.GetString("name", "");
     if (name == "spectral") SpectralAttribute(merged);
+    if (name == "visibility") CheckTransmission(merged, loc);
+}
+
+// The words shadow_transmission.h knows; another is a warning and means "Os".
+void SceneBuilder::CheckTransmission(const ParamDict& visibility, const FileLoc& loc) {
+    if (!visibility.Has("transmission")) return;
+    const std::string mode = visibility.GetString("transmission", "");
+    for (const char* known : {"opaque", "transparent", "Os", "shader"})
+        if (mode == known) return;
+    diagnostics_.Warning(loc,
+                         "Attribute \"visibility\" \"transmission\" must be opaque, "
+                         "transparent, Os or shader, got \"" +
+                             mode + "\" (taken as Os)");
 }
 
 // Attribute "spectral" "string color" NAME | "string opacity" NAME: Color or Opacity as a named

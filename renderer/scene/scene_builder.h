@@ -214,6 +214,7 @@ class SceneBuilder : public RiTarget {
     // Option "spectral": the frame's colour components become samples of the spectrum
     // (builder_spectral.cpp).
     void SpectralOption(const ParamDict& params, const FileLoc& loc);
+    void CheckTransmission(const ParamDict& visibility, const FileLoc& loc);
     void SpectralAttribute(const ParamDict& params);
     bool IsSpectralColor(const Param& param) const;
     // Sets the colour components (and their RGB matrices) and resets Color and Opacity to 1.

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/math.h"
+#include "renderer/raytrace/shadow_transmission.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_builder.h"
 #include "tests/support/captured_diagnostics.h"
@@ -130,6 +131,32 @@ TEST(AreaLightShapes, ObjectInstancesAreNotLightGeometry) {
         << built.messages;
 }
 
+TEST(ShadowTransmission, TheWordsOfTheAttribute) {
+    const Built built = Parse(
+        "Sphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"opaque\"\nSphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"transparent\"\nSphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"shader\"\nSphere 1 -1 1 360\n"
+        "Attribute \"visibility\" \"transmission\" \"glass\"\nSphere 1 -1 1 360\n");
+    ASSERT_EQ(built.frames.size(), 1u);
+    const std::vector<SceneShape>& shapes = built.frames[0].shapes;
+    ASSERT_EQ(shapes.size(), 5u);
+    EXPECT_EQ(TransmissionOf(*shapes[0].attributes), Transmission::Opacity);  // unset: Os
+    EXPECT_EQ(TransmissionOf(*shapes[1].attributes), Transmission::Opaque);
+    EXPECT_EQ(TransmissionOf(*shapes[2].attributes), Transmission::Transparent);
+    EXPECT_EQ(TransmissionOf(*shapes[3].attributes), Transmission::Opacity);
+    EXPECT_EQ(TransmissionOf(*shapes[4].attributes), Transmission::Opacity);
+    EXPECT_NE(built.messages.find("test.rib:9:1: warning: Attribute \"visibility\" "
+                                  "\"transmission\" must be opaque, transparent, Os or shader, "
+                                  "got \"glass\" (taken as Os)"),
+              std::string::npos)
+        << built.messages;
+    // Opacity 1 everywhere and no "transparent": one any-hit ray answers every shadow ray.
+    EXPECT_FALSE(AllShadowsOpaque(built.frames[0]));
+    EXPECT_TRUE(AllShadowsOpaque(Parse("Sphere 1 -1 1 360\n").frames.at(0)));
+    EXPECT_FALSE(AllShadowsOpaque(Parse("Opacity [1 0.5 1]\nSphere 1 -1 1 360\n").frames.at(0)));
+}
+
 TEST(AreaLightGeometry, DiskAreaCentroidAndNormal) {
     // A disk of radius 2 at height 3, turned to face −z by Orientation "inside".
     const AreaLightGeometry light =
@@ -141,6 +168,13 @@ TEST(AreaLightGeometry, DiskAreaCentroidAndNormal) {
     // Uniform exactly: the disk's area element is linear in v.
     EXPECT_NEAR(m.minPdf * light.Area(), 1, 1e-3);
     EXPECT_NEAR(m.maxPdf * light.Area(), 1, 1e-3);
+}
+
+TEST(AreaLightGeometry, AMovingLightWhereItsMotionStarts) {
+    const AreaLightGeometry light = LightOf(
+        "AreaLightSource \"arealight\" 1\n"
+        "MotionBegin [0 1]\n  Translate 0 0 2\n  Translate 5 0 2\nMotionEnd\nDisk 0 1 360\n");
+    ExpectNear(SampleMoments(light, 4096).meanP, V3f(0, 0, 2), 5e-3f, "mean P");
 }
 
 TEST(AreaLightGeometry, PartialDiskSweepCentroid) {

@@ -21,6 +21,7 @@ by 1/(pdf·n), that is E = ∫ L cos θ cos θ' / r² dA.
 * transmission: a point light (shadows on) above a half-transparent plate: 1 − Os passes per
   colour component; "transparent" lets all through, "opaque" none.
 * shadow map: a light shader written for shadow maps (shadow("map", Ps)) is shadowed by rays.
+* threads: the penumbra's pixels are the same on 1 and 2 threads (and change with --seed).
 
     arealight_checks.py --gonio build/bin/gonio"""
 
@@ -29,7 +30,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
-from analytic_checks import expect, float_tiff, frames_main  # noqa: E402
+from analytic_checks import (expect, float_tiff, frames_main, read_images,  # noqa: E402
+                             workspace_main)
 
 SHADERS = {
     # The irradiance about world +z, whatever side the camera sees.
@@ -229,9 +231,26 @@ def scene_text():
                    for number, (name, (options, world)) in enumerate(FRAMES.items(), 1))
 
 
+def area_light_samples_do_not_depend_on_the_thread_count(ws):
+    """The penumbra frame (256 light samples shifted per shaded point by its seed) gives the
+    same pixels on 1 and 2 threads, and other pixels under another --seed."""
+    options, world = FRAMES["penumbra"]
+    with open(ws.path("p.rib"), "w") as f:
+        f.write(f"{options}{float_tiff('p.tif')}WorldBegin\n{world}\nWorldEnd\n")
+    for args, name in ((["--threads", "1"], "t1.tif"), (["--threads", "2"], "t2.tif"),
+                       (["--seed", "7"], "s7.tif")):
+        ws.run(["render", ws.path("p.rib"), *args, "-o", name])
+    t1, t2, s7 = read_images(ws.path("t1.tif"), ws.path("t2.tif"), ws.path("s7.tif"))
+    expect(t1.pixels == t2.pixels, "--threads 1 and --threads 2 wrote different pixels")
+    expect(t1.pixels != s7.pixels, "--seed 7 did not change the light samples")
+
+
 def main():
-    return frames_main(__doc__.splitlines()[0], "gonio_arealight_", SHADERS, scene_text(),
-                       {name: name + ".tif" for name in FRAMES}, CHECKS)
+    status = frames_main(__doc__.splitlines()[0], "gonio_arealight_", SHADERS, scene_text(),
+                         {name: name + ".tif" for name in FRAMES}, CHECKS)
+    return status | workspace_main(__doc__.splitlines()[0],
+                                   [area_light_samples_do_not_depend_on_the_thread_count],
+                                   "gonio_arealight_threads_", SHADERS)
 
 
 if __name__ == "__main__":
