@@ -7,8 +7,8 @@
 // pixel). Here the hits are clustered instead: raster cells of sqrt(ShadingRate) pixels a side,
 // and within a cell the hits that lie on the same shape and face, close together on it (within the
 // cell's footprint at that depth), facing the same way. Each cluster shades its hit nearest
-// the cell's centre; the others take its Ci, Oi and AOVs. Coverage, depth and compositing stay per sample, so edges
-// keep their antialiasing. Clusters depend only on the hits, never on threads.
+// the cell's centre; the others take its Ci, Oi and AOVs. Coverage, depth and compositing stay per
+// sample, so edges keep their antialiasing. Clusters depend only on the hits, never on threads.
 
 #include <Imath/ImathVec.h>
 
