@@ -43,12 +43,29 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
     // Within a cell, the hits nearest its centre come first and are the ones shaded: shading
     // the first sample instead would shift every highlight and texture by most of a stratum
     // towards the cell's corner. Ties go to the earlier sample, so the order is fixed.
-    std::sort(cells_.begin(), cells_.end(), [](const CellEntry& a, const CellEntry& b) {
-        if (a.cellY != b.cellY) return a.cellY < b.cellY;
-        if (a.cellX != b.cellX) return a.cellX < b.cellX;
+    auto sameCell = [](const CellEntry& a, const CellEntry& b) {
+        return a.cellY == b.cellY && a.cellX == b.cellX;
+    };
+    auto cellBefore = [](const CellEntry& a, const CellEntry& b) {
+        return a.cellY != b.cellY ? a.cellY < b.cellY : a.cellX < b.cellX;
+    };
+    auto before = [&](const CellEntry& a, const CellEntry& b) {
+        if (!sameCell(a, b)) return cellBefore(a, b);
         if (a.centreDistance != b.centreDistance) return a.centreDistance < b.centreDistance;
         return a.hit < b.hit;
-    });
+    };
+    // Hits come in sample order, pixel by pixel, so at rates up to a pixel their cells are
+    // already in order and only each cell's few hits need sorting.
+    if (std::is_sorted(cells_.begin(), cells_.end(), cellBefore)) {
+        for (auto first = cells_.begin(); first != cells_.end();) {
+            auto last = first + 1;
+            while (last != cells_.end() && sameCell(*last, *first)) ++last;
+            std::sort(first, last, before);
+            first = last;
+        }
+    } else {
+        std::sort(cells_.begin(), cells_.end(), before);
+    }
     shadedBy->assign(size_t(n), -1);
     for (int begin = 0; begin < n;) {
         int end = begin + 1;

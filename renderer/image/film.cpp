@@ -55,6 +55,8 @@ FilmSpec FilmSpec::FromCropWindow(int xres, int yres, float cropXmin, float crop
 Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
     : spec_(spec),
       filter_(filter),
+      xWeight_(filter.XRadius(), [&](float d) { return filter.XWeight(d); }),
+      yWeight_(filter.YRadius(), [&](float d) { return filter.YWeight(d); }),
       tileSize_(std::max(1, tileSize)),
       xmargin_(FilterMargin(filter.XRadius())),
       ymargin_(FilterMargin(filter.YRadius())),
@@ -149,12 +151,12 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
     for (int qx = qxmin; qx <= qxmax; ++qx) {
         const float dx = x - (qx + 0.5f);
         xOffsets_.push_back(dx);
-        xWeights_.push_back(dx < -xr || dx >= xr ? 0.0f : filter.XWeight(dx));
+        xWeights_.push_back(dx < -xr || dx >= xr ? 0.0f : film_->xWeight_(dx));
     }
     for (int qy = qymin; qy <= qymax; ++qy) {
         const float dy = y - (qy + 0.5f);
         if (dy < -yr || dy >= yr) continue;
-        const float yWeight = filter.YWeight(dy);
+        const float yWeight = film_->yWeight_(dy);
         for (int qx = qxmin; qx <= qxmax; ++qx) {
             const int k = qx - qxmin;
             const float dx = xOffsets_[size_t(k)];

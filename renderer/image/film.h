@@ -19,6 +19,7 @@
 
 #include <vector>
 
+#include "renderer/image/filter_table.h"
 #include "renderer/image/pixel_filter.h"
 
 namespace gonio {
@@ -124,6 +125,7 @@ class Film {
 
     FilmSpec spec_;
     PixelFilter filter_;
+    FilterTable xWeight_, yWeight_;  // a separable filter's axes, for AddSample
     int tileSize_;
     int xmargin_, ymargin_;
     bool keepNearest_;
