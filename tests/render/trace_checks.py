@@ -14,7 +14,8 @@ the scenes' geometry:
 * texture() filters over the pixel's footprint: a checkerboard of texels far smaller than a
   pixel comes out grey, not aliased;
 * the renders are identical with 1 and 2 threads;
-* `--stats` counts the trace() rays of a mirror and the shadow rays of a lit plane exactly.
+* `--stats` counts the trace() rays of a mirror, the shadow rays of a lit plane and the rays of
+  occlusion() exactly, and the same with 1 and 2 threads.
 
     trace_checks.py --gonio build/bin/gonio [NAME ...]
 
@@ -59,6 +60,12 @@ displacement bump(float Km = 1; string texturename = "") {
     "showtexture.sl": """
 surface showtexture(string texturename = "") {
     Ci = float texture(texturename, s, t);
+    Oi = 1;
+}
+""",
+    "occluded.sl": """
+surface occluded() {
+    Ci = occlusion(P, normalize(N), 16);
     Oi = 1;
 }
 """,
@@ -320,15 +327,15 @@ def thread_counts_agree(renders):
     expect(differ == 0, f"renders with 1 and 2 threads differ in {differ} pixels")
 
 
-def ray_stats(renders, name, world, options=""):
-    """Renders `world` alone with --stats (one thread, CAMERA then `options`, every sample
-    shaded) and returns its "frame" line's numbers: (camera rays, rays traced, {kind: rays})."""
+def ray_stats(renders, name, world, options="", threads=1):
+    """Renders `world` alone with --stats (on `threads` threads, CAMERA then `options`, every
+    sample shaded) and returns its "frame" line's numbers: (camera rays, rays traced, {kind: rays})."""
     folder = renders.folder
     scene = os.path.join(folder, f"{name}.rib")
     with open(scene, "w") as f:
         f.write(f'{CAMERA}{options}\nDisplay "{name}.exr" "file" "rgba"\nWorldBegin\n'
                 f'ShadingRate 0.0625\n{world}\nWorldEnd\n')
-    proc = subprocess.run([renders.gonio, "render", "--stats", "--threads", "1", scene],
+    proc = subprocess.run([renders.gonio, "render", "--stats", "--threads", str(threads), scene],
                           cwd=folder, capture_output=True, text=True)
     expect(proc.returncode == 0, f"gonio render --stats {name}: {proc.stderr}")
     match = re.search(r"(\d+) camera rays, (\d+) rays traced(?: \(([^)]*)\))?", proc.stderr)
@@ -360,6 +367,16 @@ def stats_count_traced_and_shadow_rays(renders):
     cameras, total, kinds = ray_stats(renders, "stats_shadows", plane, "PixelSamples 4 4")
     expect(kinds == {"camera": samples, "shadow": samples} and total == 2 * samples,
            f"the lit plane traced {total} rays {kinds}, not {samples} camera + {samples} shadow")
+    # Each worker counts its own rays; the sum must not depend on how tiles met threads.
+    two = ray_stats(renders, "stats_shadows2", plane, "PixelSamples 4 4", threads=2)
+    expect(two == (cameras, total, kinds), f"with 2 threads {two}, with 1 {kinds}")
+    # occlusion() with 16 samples at every shaded point of the plane: 16 sampled rays each.
+    samples = 64 * 64
+    cameras, total, kinds = ray_stats(renders, "stats_occlusion",
+                                      'Surface "occluded"\nPolygon "P" [-3 -3 5  3 -3 5  3 3 5  '
+                                      '-3 3 5]')
+    expect(kinds == {"camera": samples, "sampled": 16 * samples},
+           f"occlusion() traced {kinds}, not {samples} camera + {16 * samples} sampled")
 
 
 def main():
