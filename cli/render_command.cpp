@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "commands.h"
 #include "frame_range.h"
@@ -59,13 +61,27 @@ std::string ReadSettings(const RenderOptions& options, RenderSettings* settings,
     return options.photonShard.empty() ? "" : ParsePhotonShard(options.photonShard, settings);
 }
 
+// The breakdown names only the kinds of ray the frame traced; its parts sum to the total.
 void PrintStats(const Frame& frame, const RenderStats& stats) {
-    std::fprintf(stderr,
-                 "frame %d: %dx%d, %.3f s, %llu camera rays, %llu rays traced, %.2f Mrays/s\n",
-                 frame.number, stats.width, stats.height, stats.seconds,
-                 static_cast<unsigned long long>(stats.cameraRays),
-                 static_cast<unsigned long long>(stats.raysTraced),
-                 stats.seconds > 0 ? stats.raysTraced / stats.seconds * 1e-6 : 0.0);
+    const RayCounts& rays = stats.rays;
+    const std::pair<const char*, uint64_t> kinds[] = {{"camera", rays.camera},
+                                                      {"trace", rays.trace},
+                                                      {"shadow", rays.shadow},
+                                                      {"sampled", rays.sampled},
+                                                      {"differential", rays.differential},
+                                                      {"path", rays.path}};
+    std::string breakdown;
+    for (const auto& [name, count] : kinds) {
+        if (count == 0) continue;
+        breakdown += (breakdown.empty() ? " (" : ", ") + std::to_string(count) + " " + name;
+    }
+    if (!breakdown.empty()) breakdown += ")";
+    const uint64_t total = rays.Total();
+    std::fprintf(
+        stderr, "frame %d: %dx%d, %.3f s, %llu camera rays, %llu rays traced%s, %.2f Mrays/s\n",
+        frame.number, stats.width, stats.height, stats.seconds,
+        static_cast<unsigned long long>(stats.cameraRays), static_cast<unsigned long long>(total),
+        breakdown.c_str(), stats.seconds > 0 ? total / stats.seconds * 1e-6 : 0.0);
 }
 
 // The scene file; standard input can be read only once, and a scene with bands is read twice.

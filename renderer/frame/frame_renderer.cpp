@@ -5,7 +5,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -121,8 +120,11 @@ class TileRenderer {
           sharing_(PixelFootprint(camera, options)),
           paths_(paths) {}
 
-    // Renders the samples of `pixels` into `film`; returns the number of rays traced.
-    uint64_t Render(const Imath::Box2i& pixels, const SampleGenerator& generator, FilmTile* film);
+    // Renders the samples of `pixels` into `film`.
+    void Render(const Imath::Box2i& pixels, const SampleGenerator& generator, FilmTile* film);
+    // The camera rays (and their continuations) of all tiles rendered so far; shading and the
+    // path tracer count their rays in their workers.
+    uint64_t CameraRays() const { return cameraRays_; }
 
   private:
     void TraceAndShade();
@@ -177,7 +179,7 @@ class TileRenderer {
     ShadingPointSharing sharing_;
     PathWorker* paths_;
     std::vector<float> radiance_;
-    uint64_t rays_ = 0;
+    uint64_t cameraRays_ = 0;  // all this renderer's tiles'; the path tracer counts its own
 };
 
 ShadingPointSharing TileRenderer::PixelFootprint(const Camera& camera, const Options& options) {
@@ -233,7 +235,7 @@ bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
     const CameraRay& ray = sample.ray;
     while (true) {
         RayHit hit;
-        ++rays_;
+        ++cameraRays_;
         if (!scene_.Intersect(ray.org, ray.dir, sample.ray.tnear, ray.tfar, ray.time, &hit))
             return false;
         sample.ray.tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
@@ -243,9 +245,8 @@ bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
     }
 }
 
-uint64_t TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& generator,
-                              FilmTile* film) {
-    rays_ = 0;
+void TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& generator,
+                          FilmTile* film) {
     samples_.clear();
     generator.AddSamples(pixels, &samples_);
     if (paths_)
@@ -253,7 +254,6 @@ uint64_t TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator&
     else
         TraceAndShade();
     Splat(film);
-    return rays_;
 }
 
 void TileRenderer::TraceAndShade() {
@@ -283,7 +283,6 @@ void TileRenderer::TraceAndShade() {
 
 void TileRenderer::TracePaths() {
     radiance_.resize(size_t(ncomps_));
-    const uint64_t before = paths_->RaysTraced();
     for (SampleState& sample : samples_) {
         float depth = 0;
         if (!paths_->Radiance(sample.ray, sample.randomSeed, radiance_.data(), &depth)) continue;
@@ -291,7 +290,6 @@ void TileRenderer::TracePaths() {
         sample.alpha = 1;
         sample.depth = depth;
     }
-    rays_ += paths_->RaysTraced() - before;
 }
 
 void TileRenderer::Splat(FilmTile* film) {
@@ -519,7 +517,6 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const int width = range.max.x - range.min.x + 1, height = range.max.y - range.min.y + 1;
 
     Progress progress("render", uint64_t(width) * height, settings.progress);
-    std::atomic<uint64_t> raysTraced{0};
     tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
         [&] { return shading->MakeWorker(); });
     tbb::enumerable_thread_specific<std::unique_ptr<PathWorker>> pathWorkers(
@@ -535,7 +532,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
                 renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options,
                                                           outputs, pathWorkers.local().get());
             FilmTile filmTile = film.StartTile(tile);
-            raysTraced += renderer->Render(pixels, generator, &filmTile);
+            renderer->Render(pixels, generator, &filmTile);
             film.StoreTile(std::move(filmTile));
             progress.Advance(uint64_t(pixels.max.x - pixels.min.x + 1) *
                              (pixels.max.y - pixels.min.y + 1));
@@ -557,7 +554,15 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
         stats->seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats->cameraRays = uint64_t(width) * height * xsamples * ysamples;
-        stats->raysTraced = raysTraced;
+        // Each thread's renderer and workers counted their own rays; the sum does not depend
+        // on which thread rendered which tile.
+        stats->rays = RayCounts{};
+        for (const auto& renderer : renderers)
+            if (renderer) stats->rays.camera += renderer->CameraRays();
+        for (const auto& worker : workers)
+            if (worker) stats->rays += worker->Rays();
+        for (const auto& worker : pathWorkers)
+            if (worker) stats->rays.path += worker->RaysTraced();
         stats->width = spec.WindowWidth();
         stats->height = spec.WindowHeight();
     }

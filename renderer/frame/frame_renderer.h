@@ -6,6 +6,7 @@
 #include <string>
 
 #include "base/diagnostics.h"
+#include "renderer/raytrace/ray_counts.h"
 #include "renderer/scene/frame.h"
 #include "renderer/scene/render_settings.h"
 
@@ -13,8 +14,8 @@ namespace gonio {
 
 struct RenderStats {
     double seconds = 0;
-    uint64_t cameraRays = 0;
-    uint64_t raysTraced = 0;  // including continuation rays through transparent surfaces
+    uint64_t cameraRays = 0;  // one per pixel sample
+    RayCounts rays;           // every ray traced, by kind
     int width = 0, height = 0;
 };
 

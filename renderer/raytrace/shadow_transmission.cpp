@@ -63,8 +63,8 @@ bool AllShadowsOpaque(const Frame& frame) {
     return true;
 }
 
-void ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir,
-                        float tnear, float tfar, float time, int ncomps, float* out) {
+int ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir,
+                       float tnear, float tfar, float time, int ncomps, float* out) {
     std::fill(out, out + ncomps, 1.f);
     // Past each crossing by the same relative offset the shadow ray starts with.
     const float step = tnear;
@@ -72,11 +72,14 @@ void ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imat
     float t = tnear;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         RayHit hit;
-        if (!scene.Intersect(org, dir, t, tfar, time, &hit)) return;
+        if (!scene.Intersect(org, dir, t, tfar, time, &hit)) return crossing + 1;
         scene.Evaluate(org, dir, hit, &sp);
         const Transmission mode =
             sp.attributes ? TransmissionOf(*sp.attributes) : Transmission::Opaque;
-        if (mode == Transmission::Opaque) break;
+        if (mode == Transmission::Opaque) {
+            std::fill(out, out + ncomps, 0.f);
+            return crossing + 1;
+        }
         if (mode == Transmission::Opacity) {
             bool any = false;
             for (int c = 0; c < ncomps; ++c) {
@@ -84,11 +87,12 @@ void ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imat
                 out[c] *= std::clamp(1 - os, 0.f, 1.f);
                 any |= out[c] > 0;
             }
-            if (!any) return;
+            if (!any) return crossing + 1;
         }
         t = hit.t + step;
     }
     std::fill(out, out + ncomps, 0.f);
+    return kMaxCrossings;
 }
 
 }  // namespace gonio

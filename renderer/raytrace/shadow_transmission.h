@@ -27,7 +27,8 @@ bool AllShadowsOpaque(const Frame& frame);
 
 // The fraction of light, per colour component (ncomps floats into `out`), that passes along
 // org + t·dir for tnear < t < tfar at `time`: the product of 1 − Os over the surfaces crossed.
-void ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir,
-                        float tnear, float tfar, float time, int ncomps, float* out);
+// Returns how many rays it traced: one per surface crossed, and one that finds no more.
+int ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir,
+                       float tnear, float tfar, float time, int ncomps, float* out);
 
 }  // namespace gonio

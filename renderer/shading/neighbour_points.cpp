@@ -47,14 +47,14 @@ V2f ParametricStep(const SurfacePoint& sp, const V3f& dP) {
     return V2f((c * ru - b * rv) / det, (a * rv - b * ru) / det);
 }
 
-void FindNeighbourPoint(const RayScene& scene, const SurfacePoint& centre, const V3f& centreOrg,
-                        const V3f& centreDir, const V3f& org, const V3f& dir, float tnear,
-                        float time, SurfacePoint* out, V3f* incident) {
-    if (HitOnSurface(scene, centre, org, dir, tnear, time, out, incident)) return;
+int FindNeighbourPoint(const RayScene& scene, const SurfacePoint& centre, const V3f& centreOrg,
+                       const V3f& centreDir, const V3f& org, const V3f& dir, float tnear,
+                       float time, SurfacePoint* out, V3f* incident) {
+    if (HitOnSurface(scene, centre, org, dir, tnear, time, out, incident)) return 1;
     // The mirror image of the neighbour ray about the centre ray: a pixel the other way.
     const V3f mirrorOrg = 2.f * centreOrg - org;
     const V3f mirrorDir = 2.f * centreDir.normalized() - dir.normalized();
-    if (HitOnSurface(scene, centre, mirrorOrg, mirrorDir, tnear, time, out, incident)) return;
+    if (HitOnSurface(scene, centre, mirrorOrg, mirrorDir, tnear, time, out, incident)) return 2;
     *out = centre;
     V3f q = centre.P;
     if (!TangentPlaneHit(centre, org, dir, &q)) q = centre.P;
@@ -62,6 +62,7 @@ void FindNeighbourPoint(const RayScene& scene, const SurfacePoint& centre, const
     out->P = q;
     out->u += step.x, out->v += step.y;
     *incident = q - org;
+    return 2;
 }
 
 }  // namespace gonio

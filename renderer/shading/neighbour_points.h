@@ -15,11 +15,12 @@ namespace gonio {
 // (centreOrg, centreDir) hit. Where the ray meets another surface or nothing (at a silhouette),
 // the ray mirrored about the centre ray is tried, as a backward difference; where that fails
 // too, the point on the tangent plane of `centre`, with centre's values and its (u, v) moved
-// along. Writes the point and its incident vector I (from the ray's origin).
-void FindNeighbourPoint(const RayScene& scene, const SurfacePoint& centre,
-                        const Imath::V3f& centreOrg, const Imath::V3f& centreDir,
-                        const Imath::V3f& org, const Imath::V3f& dir, float tnear, float time,
-                        SurfacePoint* out, Imath::V3f* incident);
+// along. Writes the point and its incident vector I (from the ray's origin); returns how many
+// rays it traced (1 or 2).
+int FindNeighbourPoint(const RayScene& scene, const SurfacePoint& centre,
+                       const Imath::V3f& centreOrg, const Imath::V3f& centreDir,
+                       const Imath::V3f& org, const Imath::V3f& dir, float tnear, float time,
+                       SurfacePoint* out, Imath::V3f* incident);
 
 // The change (Δu, Δv) that moves `sp` by dP over its tangent plane: the least-squares solution
 // of dPdu·Δu + dPdv·Δv = dP; (0, 0) where dPdu and dPdv do not span a plane.

@@ -18,7 +18,8 @@ V3f ToV3(const float* data, int n, int i) { return V3f(data[i], data[n + i], dat
 
 RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
                              const Camera& camera, ShadingFiles& textures,
-                             sl::ShaderExecutor& lightExecutor, RayTracer& tracer, int depth)
+                             sl::ShaderExecutor& lightExecutor, RayTracer& tracer, int depth,
+                             RayCounts& rays)
     : shaders_(shaders),
       scene_(scene),
       camera_(camera),
@@ -26,6 +27,7 @@ RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
       lightExecutor_(lightExecutor),
       tracer_(tracer),
       depth_(depth),
+      rays_(rays),
       worldFromCurrent_(shaders.CurrentFromWorld().inverse()) {
     colorComponents_ = shaders.GetFrame().options.colorComponents;
 }
@@ -186,7 +188,7 @@ void RenderContext::ShareLightWithNeighbours(sl::LightResult* result) const {
 // point to the light, so the shadow ray ends just before L's tip; for a solar light L is only a
 // direction, and the ray goes on for ever. Light from all directions (solar() without an axis)
 // is not shadowed: no one ray stands for it.
-void RenderContext::TraceShadows(sl::LightResult* light) const {
+void RenderContext::TraceShadows(sl::LightResult* light) {
     // Shadows are traced at the shutter's opening: points of a batch have no common time.
     const float time = shaders_.GetFrame().options.shutterOpen;
     const float end = light->atInfinity ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
@@ -203,11 +205,13 @@ void RenderContext::TraceShadows(sl::LightResult* light) const {
         worldFromCurrent_.multDirMatrix(L, dir);
         const float eps = 1e-4f * std::max(1.f, org.length() / std::max(dir.length(), 1e-20f));
         if (opaque) {
+            ++rays_.shadow;
             if (!scene_.Occluded(org, dir, eps, end, time)) continue;
             std::fill(passed.begin(), passed.end(), 0.f);
         } else {
             // Partly transparent shadow casters let 1 − Os through (shadow_transmission.h).
-            ShadowTransmission(scene_, org, dir, eps, end, time, colorComponents_, passed.data());
+            rays_.shadow += uint64_t(ShadowTransmission(scene_, org, dir, eps, end, time,
+                                                        colorComponents_, passed.data()));
         }
         for (int c = 0; c < colorComponents_; ++c) light->Cl[c * n_ + i] *= passed[c];
     }

@@ -58,7 +58,7 @@ class RenderContext : public sl::ShadingContext {
     // `depth`: the depth of the rays whose hits this context shades (0: camera rays).
     RenderContext(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
                   ShadingFiles& textures, sl::ShaderExecutor& lightExecutor, RayTracer& tracer,
-                  int depth);
+                  int depth, RayCounts& rays);
 
     // The batch about to be shaded: its points, their current-space positions (3 × n, for the
     // light shaders' Ps) and the shader whose "shader" space applies. With `neighbours`, the
@@ -131,7 +131,7 @@ class RenderContext : public sl::ShadingContext {
     sl::LightResult RunLight(int index, const FrameLight& light, const sl::ShaderGlobals& globals,
                              const uint8_t* active);
     void ShareLightWithNeighbours(sl::LightResult* result) const;
-    void TraceShadows(sl::LightResult* light) const;
+    void TraceShadows(sl::LightResult* light);
     // The points whose lights and traced rays are computed (the rest share them).
     int MainCount() const { return neighbours_ ? neighbours_->mainCount : n_; }
     // Copies the main points' values to their neighbour points in `planes` planes of n floats.
@@ -147,6 +147,7 @@ class RenderContext : public sl::ShadingContext {
     sl::ShaderExecutor& lightExecutor_;
     RayTracer& tracer_;
     int depth_;
+    RayCounts& rays_;  // the worker's: shadow and sampled rays are counted here
     const ShadingBatch* batch_ = nullptr;
     const float* currentP_ = nullptr;
     const float* lightP_ = nullptr;  // P of the points the lights run for (3 × MainCount())

@@ -80,6 +80,7 @@ bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& 
             float start = tnear, remaining = 1;
             for (int layer = 0; layer < kMaxTransmissionLayers && remaining > 1e-4f; ++layer) {
                 RayHit hit;
+                ++rays_.sampled;
                 if (!scene_.Intersect(org, dir, start, tfar, time, &hit)) break;
                 hits->hit[k] = 1;
                 scene_.Evaluate(org, dir, hit, &full);
@@ -94,10 +95,12 @@ bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& 
             continue;
         }
         if (rays.kind == Kind::AnyHit) {
+            ++rays_.sampled;
             hits->hit[k] = scene_.Occluded(org, dir, tnear, tfar, time);
             continue;
         }
         RayHit hit;
+        ++rays_.sampled;
         if (!scene_.Intersect(org, dir, tnear, tfar, time, &hit)) continue;
         hits->hit[k] = 1;
         scene_.EvaluateLean(org, dir, hit, &lean);

@@ -46,10 +46,12 @@ int OutputFloats(const std::vector<ShaderOutput>& outputs) {
 class DepthShader {
   public:
     DepthShader(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
-                ShadingFiles& textures, RayTracer& tracer, int depth, ShadingWorker& fallback)
+                ShadingFiles& textures, RayTracer& tracer, int depth, ShadingWorker& fallback,
+                RayCounts& rays)
         : shaders_(shaders),
           scene_(scene),
-          context_(shaders, scene, camera, textures, lightExecutor_, tracer, depth),
+          context_(shaders, scene, camera, textures, lightExecutor_, tracer, depth, rays),
+          rays_(rays),
           fallback_(fallback),
           ncomps_(shaders.GetFrame().options.colorComponents) {}
 
@@ -79,6 +81,7 @@ class DepthShader {
     // and surface shaders left in their registers while the next shader runs.
     sl::ShaderExecutor displacementExecutor_, surfaceExecutor_, lightExecutor_, volumeExecutor_;
     RenderContext context_;
+    RayCounts& rays_;  // the worker's, shared by all depths
     ShadingWorker& fallback_;
     int ncomps_;
     sl::ShaderGlobals globals_;
@@ -131,9 +134,9 @@ void DepthShader::AddNeighbourPoints(ShadingBatch* chunk, const NeighbourRays* r
             const V3f& I = chunk->incident[i];
             SurfacePoint* neighbour = &neighbourPoints_[axis * m + i];
             V3f incident;
-            FindNeighbourPoint(scene_, centre, centre.P - I, I, rays[i].org[axis],
-                               rays[i].dir[axis], rays[i].tnear, rays[i].time, neighbour,
-                               &incident);
+            rays_.differential += uint64_t(FindNeighbourPoint(
+                scene_, centre, centre.P - I, I, rays[i].org[axis], rays[i].dir[axis],
+                rays[i].tnear, rays[i].time, neighbour, &incident));
             chunk->points.push_back(neighbour);
             chunk->incident.push_back(incident);
             chunk->depth.push_back(chunk->depth[i]);
@@ -318,11 +321,12 @@ void DepthShader::ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk
 }
 
 // The next hit along a traced ray past *tnear and before tfar that faces the ray (or is
-// two-sided), as camera rays find theirs; *tnear moves past it.
+// two-sided), as camera rays find theirs; *tnear moves past it. Each ray cast adds one to *rays.
 bool NextHit(const RayScene& scene, const V3f& org, const V3f& dir, float time, float* tnear,
-             float tfar, SurfacePoint* sp, float* t) {
+             float tfar, SurfacePoint* sp, float* t, uint64_t* rays) {
     while (true) {
         RayHit hit;
+        ++*rays;
         if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
         *tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
         scene.Evaluate(org, dir, hit, sp);
@@ -354,8 +358,9 @@ class ShaderWorker : public ShadingWorker, public RayTracer {
   private:
     DepthShader& AtDepth(int depth) {
         while (int(depths_.size()) <= depth)
-            depths_.push_back(std::make_unique<DepthShader>(
-                shaders_, scene_, camera_, textures_, *this, int(depths_.size()), *fallback_));
+            depths_.push_back(std::make_unique<DepthShader>(shaders_, scene_, camera_, textures_,
+                                                            *this, int(depths_.size()), *fallback_,
+                                                            rays_));
         return *depths_[depth];
     }
 
@@ -392,7 +397,7 @@ void ShaderWorker::TraceRays(int depth, const TracedRays& rays, float* colours) 
                                    ? rays.tfar[r]
                                    : std::numeric_limits<float>::infinity();
             if (!NextHit(scene_, rays.org[r], rays.dir[r], rays.time, &tnear[r], tfar,
-                         &points[hitRays.size()], &t)) {
+                         &points[hitRays.size()], &t, &rays_.trace)) {
                 alive[r] = 0;
                 continue;
             }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/raytrace/ray_counts.h"
 #include "renderer/raytrace/surface_point.h"
 
 namespace gonio {
@@ -57,6 +58,11 @@ class ShadingWorker {
     // Whether Shade wants ShadingBatch::neighbourRays for points with these attributes (their
     // shaders take derivatives, or trace rays to surfaces that do).
     virtual bool WantsNeighbourRays(const Attributes*) const { return false; }
+    // The rays this worker's shading has traced so far (shadows, trace(), ...), for --stats.
+    const RayCounts& Rays() const { return rays_; }
+
+  protected:
+    RayCounts rays_;
 };
 
 class SurfaceShading {

@@ -19,7 +19,10 @@ const GlobalVarInfo kGlobals[kGlobalCount] = {
     // ambient lights run at the surface points and face N towards I.
     {"N", BaseType::Normal, true, kS | kL | kD, kS | kL | kD},
     {"Ng", BaseType::Normal, true, kS | kL | kD, 0},
-    {"I", BaseType::Vector, true, kS | kL | kD | kV, 0},
+    // RISpec 3.2 Table 12.1 lists I among a surface shader's inputs only; Pixie lets surface
+    // shaders write it, and its mirror.sl normalises it in place (I = normalize(I)). The write
+    // changes the shader's own I (and a Display of "I", which shows the surface's, as for N).
+    {"I", BaseType::Vector, true, kS | kL | kD | kV, kS},
     {"E", BaseType::Point, false, kAll, 0},
     {"dPdu", BaseType::Vector, true, kS | kL | kD, 0},
     {"dPdv", BaseType::Vector, true, kS | kL | kD, 0},

@@ -13,7 +13,9 @@ the scenes' geometry:
 * bumpy with a ramp texture tilts the normal of a plane by the analytic angle;
 * texture() filters over the pixel's footprint: a checkerboard of texels far smaller than a
   pixel comes out grey, not aliased;
-* the renders are identical with 1 and 2 threads.
+* the renders are identical with 1 and 2 threads;
+* `--stats` counts the trace() rays of a mirror, the shadow rays of a lit plane and the rays of
+  occlusion() exactly, and the same with 1 and 2 threads.
 
     trace_checks.py --gonio build/bin/gonio [NAME ...]
 
@@ -23,6 +25,7 @@ All frames go into one RIB file and one `gonio render`; images are read with one
 import argparse
 import math
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -57,6 +60,12 @@ displacement bump(float Km = 1; string texturename = "") {
     "showtexture.sl": """
 surface showtexture(string texturename = "") {
     Ci = float texture(texturename, s, t);
+    Oi = 1;
+}
+""",
+    "occluded.sl": """
+surface occluded() {
+    Ci = occlusion(P, normalize(N), 16);
     Oi = 1;
 }
 """,
@@ -316,6 +325,58 @@ def thread_counts_agree(renders):
     one, two = (image.pixels for image in read_images(*outputs))
     differ = sum(1 for xy in one if one[xy] != two[xy])
     expect(differ == 0, f"renders with 1 and 2 threads differ in {differ} pixels")
+
+
+def ray_stats(renders, name, world, options="", threads=1):
+    """Renders `world` alone with --stats (on `threads` threads, CAMERA then `options`, every
+    sample shaded) and returns its "frame" line's numbers: (camera rays, rays traced, {kind: rays})."""
+    folder = renders.folder
+    scene = os.path.join(folder, f"{name}.rib")
+    with open(scene, "w") as f:
+        f.write(f'{CAMERA}{options}\nDisplay "{name}.exr" "file" "rgba"\nWorldBegin\n'
+                f'ShadingRate 0.0625\n{world}\nWorldEnd\n')
+    proc = subprocess.run([renders.gonio, "render", "--stats", "--threads", str(threads), scene],
+                          cwd=folder, capture_output=True, text=True)
+    expect(proc.returncode == 0, f"gonio render --stats {name}: {proc.stderr}")
+    match = re.search(r"(\d+) camera rays, (\d+) rays traced(?: \(([^)]*)\))?", proc.stderr)
+    expect(match is not None, f"no ray statistics in: {proc.stderr}")
+    kinds = {}
+    for part in (match.group(3) or "").split(", "):
+        if part:
+            count, kind = part.split(" ")
+            kinds[kind] = int(count)
+    return int(match.group(1)), int(match.group(2)), kinds
+
+
+@check
+def stats_count_traced_and_shadow_rays(renders):
+    # 64x64 pixels, one sample each (CAMERA), every camera ray hits the opaque mirror: one
+    # camera ray and one trace() ray a pixel, whether the reflected ray meets the square or
+    # escapes (an opaque hit ends it; no surface lies behind the mirror's rays).
+    samples = 64 * 64
+    cameras, total, kinds = ray_stats(renders, "stats_mirror", FRAMES["mirror"][1])
+    expect(cameras == samples, f"{cameras} camera rays, not {samples}")
+    expect(kinds == {"camera": samples, "trace": samples} and total == 2 * samples,
+           f"the mirror traced {total} rays {kinds}, not {samples} camera + {samples} trace")
+    # An opaque plane filling the frame, lit by one shadowed point light in front of it: with
+    # 4x4 samples a pixel and ShadingRate 1/16 every sample is shaded, and each shaded point
+    # sends one shadow ray (no shadow caster is partly transparent, so no ray goes further).
+    samples = 64 * 64 * 16
+    plane = ('Attribute "light" "shadows" "on"\nLightSource "pointlight" 1 "from" [0 0 2]\n'
+             'Surface "matte"\nPolygon "P" [-3 -3 5  3 -3 5  3 3 5  -3 3 5]')
+    cameras, total, kinds = ray_stats(renders, "stats_shadows", plane, "PixelSamples 4 4")
+    expect(kinds == {"camera": samples, "shadow": samples} and total == 2 * samples,
+           f"the lit plane traced {total} rays {kinds}, not {samples} camera + {samples} shadow")
+    # Each worker counts its own rays; the sum must not depend on how tiles met threads.
+    two = ray_stats(renders, "stats_shadows2", plane, "PixelSamples 4 4", threads=2)
+    expect(two == (cameras, total, kinds), f"with 2 threads {two}, with 1 {kinds}")
+    # occlusion() with 16 samples at every shaded point of the plane: 16 sampled rays each.
+    samples = 64 * 64
+    cameras, total, kinds = ray_stats(renders, "stats_occlusion",
+                                      'Surface "occluded"\nPolygon "P" [-3 -3 5  3 -3 5  3 3 5  '
+                                      '-3 3 5]')
+    expect(kinds == {"camera": samples, "sampled": 16 * samples},
+           f"occlusion() traced {kinds}, not {samples} camera + {16 * samples} sampled")
 
 
 def main():

@@ -91,6 +91,11 @@ TEST(ShadeCheck, ReadOnlyGlobalsAndParametersNeedDefaults) {
     EXPECT_NE(e.find("error: cannot assign to 'L': it is read-only in surface shaders"),
               std::string::npos)
         << e;
+    // I is writable in surface shaders only (as Pixie has it, docs/shading-language.md).
+    e = Errors("displacement t() { I = 0; }\n");
+    EXPECT_NE(e.find("error: cannot assign to 'I': it is read-only in displacement shaders"),
+              std::string::npos)
+        << e;
 }
 
 TEST(ShadeCheck, OverloadsResolveOnExpectedReturnType) {

@@ -226,5 +226,22 @@ TEST(ShadeExec, FiveColorComponents) {
     EXPECT_EQ(r.At(4, 0), 15);
 }
 
+// A surface shader may assign to I, as Pixie's mirror.sl does (I = normalize(I)): later reads
+// see the new value.
+TEST(ShadeExec, SurfaceShaderWritesI) {
+    auto r = Shade(R"(surface t() {
+        I = vector(3, 0, 4);
+        I = normalize(I);
+        Ci = color(xcomp(I), ycomp(I), zcomp(I));
+    })",
+                   2, 1, "Ci");
+    ASSERT_EQ(r.width, 3) << r.diagnostics;
+    for (int i = 0; i < 2; ++i) {
+        EXPECT_FLOAT_EQ(r.At(0, i), 0.6f);
+        EXPECT_FLOAT_EQ(r.At(1, i), 0.f);
+        EXPECT_FLOAT_EQ(r.At(2, i), 0.8f);
+    }
+}
+
 }  // namespace
 }  // namespace gonio::sl
