@@ -1,8 +1,5 @@
 #include "renderer/image/film.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,7 +62,20 @@ Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
              Imath::V2i(spec.xmax + xmargin_, spec.ymax + ymargin_)),
       tilesX_((range_.max.x - range_.min.x + tileSize_) / tileSize_),
       tilesY_((range_.max.y - range_.min.y + tileSize_) / tileSize_),
-      tiles_(size_t(tilesX_) * tilesY_) {}
+      reachX_((xmargin_ + tileSize_ - 1) / tileSize_),
+      reachY_((ymargin_ + tileSize_ - 1) / tileSize_),
+      tiles_(size_t(tilesX_) * tilesY_),
+      stored_(tiles_.size(), 0),
+      resolved_(tiles_.size(), 0) {
+    image_.width = spec_.WindowWidth();
+    image_.height = spec_.WindowHeight();
+    image_.channels = spec_.channels;
+    image_.xorigin = spec_.xmin;
+    image_.yorigin = spec_.ymin;
+    image_.fullWidth = spec_.xres;
+    image_.fullHeight = spec_.yres;
+    image_.pixels.resize(size_t(image_.width) * image_.height * image_.channels);
+}
 
 double Film::BytesNeeded(const FilmSpec& spec, const PixelFilter& filter) {
     const double width = spec.WindowWidth() + 2.0 * FilterMargin(filter.XRadius());
@@ -106,8 +116,61 @@ bool Film::WeightsCanCancel(const PixelFilter& filter) {
 FilmTile Film::StartTile(int tile) const { return FilmTile(*this, tile); }
 
 void Film::StoreTile(FilmTile&& tile) {
-    if (tile.film_ == this && tile.index_ >= 0 && tile.index_ < TileCount())
-        tiles_[size_t(tile.index_)] = std::move(tile);
+    if (tile.film_ != this || tile.index_ < 0 || tile.index_ >= TileCount()) return;
+    const int index = tile.index_;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (stored_[size_t(index)]) return;
+    tiles_[size_t(index)] = std::move(tile);
+    stored_[size_t(index)] = 1;
+    ResolveReadyTiles(index);
+}
+
+Imath::Box2i Film::TilesInReach(int tile) const {
+    const int tx = tile % tilesX_, ty = tile / tilesX_;
+    return Imath::Box2i(
+        Imath::V2i(std::max(0, tx - reachX_), std::max(0, ty - reachY_)),
+        Imath::V2i(std::min(tilesX_ - 1, tx + reachX_), std::min(tilesY_ - 1, ty + reachY_)));
+}
+
+bool Film::AllInReach(int tile, const std::vector<uint8_t>& flags) const {
+    const Imath::Box2i reach = TilesInReach(tile);
+    for (int ty = reach.min.y; ty <= reach.max.y; ++ty)
+        for (int tx = reach.min.x; tx <= reach.max.x; ++tx)
+            if (!flags[size_t(ty) * tilesX_ + tx]) return false;
+    return true;
+}
+
+void Film::ResolveReadyTiles(int stored) {
+    const Imath::Box2i reach = TilesInReach(stored);
+    std::vector<int> resolvedNow;
+    for (int ty = reach.min.y; ty <= reach.max.y; ++ty)
+        for (int tx = reach.min.x; tx <= reach.max.x; ++tx) {
+            const int t = ty * tilesX_ + tx;
+            if (resolved_[size_t(t)] || !AllInReach(t, stored_)) continue;
+            ResolveTile(t);
+            resolvedNow.push_back(t);
+        }
+    // A stored tile whose every neighbour is resolved is read by no pixel any more.
+    for (int t : resolvedNow) {
+        const Imath::Box2i around = TilesInReach(t);
+        for (int ty = around.min.y; ty <= around.max.y; ++ty)
+            for (int tx = around.min.x; tx <= around.max.x; ++tx) {
+                const int n = ty * tilesX_ + tx;
+                if (tiles_[size_t(n)].film_ && AllInReach(n, resolved_))
+                    tiles_[size_t(n)] = FilmTile();
+            }
+    }
+}
+
+void Film::ResolveTile(int tile) {
+    const Imath::Box2i pixels = TilePixels(tile);
+    const int xmin = std::max(pixels.min.x, spec_.xmin), xmax = std::min(pixels.max.x, spec_.xmax);
+    const int ymin = std::max(pixels.min.y, spec_.ymin), ymax = std::min(pixels.max.y, spec_.ymax);
+    std::vector<double> sums(size_t(spec_.channels));
+    for (int y = ymin; y <= ymax; ++y)
+        for (int x = xmin; x <= xmax; ++x)
+            ResolvePixel(x, y, sums, image_.At(x - spec_.xmin, y - spec_.ymin));
+    resolved_[size_t(tile)] = 1;
 }
 
 FilmTile::FilmTile(const Film& film, int index)
@@ -225,23 +288,11 @@ void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) co
     if (spec_.depthChannel >= 0 && spec_.depthChannel < channels) out[spec_.depthChannel] = depth;
 }
 
-Image Film::Resolve() const {
-    Image image;
-    image.width = spec_.WindowWidth();
-    image.height = spec_.WindowHeight();
-    image.channels = spec_.channels;
-    image.xorigin = spec_.xmin;
-    image.yorigin = spec_.ymin;
-    image.fullWidth = spec_.xres;
-    image.fullHeight = spec_.yres;
-    image.pixels.resize(size_t(image.width) * image.height * image.channels);
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const auto& rows) {
-        std::vector<double> sums(spec_.channels);
-        for (int y = rows.begin(); y != rows.end(); ++y)
-            for (int x = 0; x < image.width; ++x)
-                ResolvePixel(spec_.xmin + x, spec_.ymin + y, sums, image.At(x, y));
-    });
-    return image;
+Image Film::Resolve() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (int t = 0; t < TileCount(); ++t)
+        if (!resolved_[size_t(t)]) ResolveTile(t);
+    return std::move(image_);
 }
 
 }  // namespace gonio

@@ -1,10 +1,11 @@
 #pragma once
 // The film: camera samples filtered into pixels. The frame is cut into square tiles; the
 // renderer splats each tile's samples into a FilmTile (filter-weighted sums for every pixel the
-// samples reach, including pixels of neighbouring tiles), and Resolve adds, for each pixel, the
-// sums of the tiles that reach it in tile order. The result is therefore the same whatever order
-// threads finish their tiles in, and only a few floats per pixel are kept instead of every
-// sample.
+// samples reach, including pixels of neighbouring tiles), and each pixel adds the sums of the
+// tiles that reach it in tile order, as soon as they are all stored (StoreTile) or at the end
+// (Resolve). The result is therefore the same whatever order threads finish their tiles in;
+// only a few floats per pixel are kept instead of every sample, and the filter sums only for a
+// band of unfinished tiles.
 //
 // Coordinates. Raster space has its origin at the top-left corner of the full frame (Format
 // xres yres), x to the right, y down; pixel (px, py) covers [px, px+1) x [py, py+1) and its centre
@@ -17,6 +18,8 @@
 
 #include <Imath/ImathBox.h>
 
+#include <cstdint>
+#include <mutex>
 #include <vector>
 
 #include "renderer/image/filter_table.h"
@@ -82,8 +85,9 @@ class Film {
     // The filter fixes the margin of extra pixels around the window whose samples are needed.
     Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize = 16);
 
-    // What such a film holds at its fullest (every tile stored, and the resolved image), so a
-    // render can refuse one that cannot fit before allocating it.
+    // At most what such a film holds (every tile stored, and the resolved image; StoreTile lets
+    // finished tiles go, so a render holds far less), so a render can refuse one that cannot
+    // fit before allocating it.
     static double BytesNeeded(const FilmSpec& spec, const PixelFilter& filter);
 
     const FilmSpec& Spec() const { return spec_; }
@@ -102,15 +106,18 @@ class Film {
 
     // An empty tile to splat the samples of TilePixels(tile) into.
     FilmTile StartTile(int tile) const;
-    // Keeps a finished tile for Resolve. Threads may store different tiles concurrently; storing
-    // a tile twice replaces it.
+    // Takes a finished tile (each tile once; threads may store different tiles concurrently).
+    // As soon as every tile whose samples reach a tile's pixels is stored, those pixels are
+    // resolved, and a stored tile is let go once every pixel it reaches is resolved: a frame
+    // holds its resolved image and a band of tiles, not the filter sums of every pixel.
     void StoreTile(FilmTile&& tile);
 
-    // Filters the stored tiles into the window's pixels, in parallel. Each pixel adds the sums of
-    // the tiles that reach it in tile order and divides by the sum of weights, so the result is
-    // the same whatever the number of threads. Where the weights cancel (a negative lobe), the
-    // pixel takes the value of its nearest sample; a pixel no sample reaches is 0.
-    Image Resolve() const;
+    // The window's pixels, filtered: those StoreTile has not resolved yet are resolved now from
+    // the tiles stored. Each pixel adds the sums of the tiles that reach it in tile order and
+    // divides by the sum of weights, so the result is the same whatever the number of threads
+    // and whatever order the tiles came in. Where the weights cancel (a negative lobe), the
+    // pixel takes the value of its nearest sample; a pixel no sample reaches is 0. Call once.
+    Image Resolve();
 
     // Whether some pixel's weights can sum to (nearly) 0, so that the film must keep each
     // pixel's nearest sample as Resolve's fallback: filters with negative lobes, and footprints
@@ -122,6 +129,13 @@ class Film {
     // The window pixels that samples of `pixels` can reach.
     Imath::Box2i Footprint(const Imath::Box2i& pixels) const;
     void ResolvePixel(int px, int py, std::vector<double>& sum, float* out) const;
+    // The tiles within reach of `tile` (whose samples can reach its pixels, and whose pixels its
+    // samples can reach), itself included, as a tile-index box.
+    Imath::Box2i TilesInReach(int tile) const;
+    bool AllInReach(int tile, const std::vector<uint8_t>& flags) const;
+    // Resolves the window pixels of `tile` into image_ (StoreTile and Resolve, under mutex_).
+    void ResolveTile(int tile);
+    void ResolveReadyTiles(int stored);
 
     FilmSpec spec_;
     PixelFilter filter_;
@@ -131,7 +145,11 @@ class Film {
     bool keepNearest_;
     Imath::Box2i range_;
     int tilesX_, tilesY_;
+    int reachX_, reachY_;  // tiles each way within reach of a tile
     std::vector<FilmTile> tiles_;
+    std::mutex mutex_;  // guards what follows and the stores into tiles_
+    std::vector<uint8_t> stored_, resolved_;
+    Image image_;
 };
 
 // The samples of one tile, splatted: for each window pixel they reach, the filter-weighted sums
