@@ -28,8 +28,8 @@ cpu_best() {
     echo "$best"
 }
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
-     "load $(cut -d' ' -f1-3 /proc/loadavg)"
+source bench/render/timing.sh
+machine_line
 startup=$(cpu_best 3 "$gonio" render "$work/empty.rib")
 echo "start-up (empty 1x1 render): $startup s CPU"
 for threads in 1 2; do

@@ -7,22 +7,14 @@
 #   bench/render/run_grass_field.sh         (GONIO=path/to/gonio to time another build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source bench/render/timing.sh
 gonio=$(realpath "${GONIO:-build/bin/gonio}")
 scene=$(realpath ribs/grass_field.rib)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cd "$work"
-"$gonio" render "$(dirname "$scene")/grass.rib" -o grass.pm 2> /dev/null
-"$gonio" brdf iopt 8 24 0.5 0 grass.pm grass.grd --bake 16 > /dev/null 2>&1
+(cd "$work" && "$gonio" render "$(dirname "$scene")/grass.rib" -o grass.pm 2> /dev/null)
+(cd "$work" && "$gonio" brdf iopt 8 24 0.5 0 grass.pm grass.grd --bake 16 > /dev/null 2>&1)
 
-best=""
-for ((k = 0; k < 3; ++k)); do
-    start=$(date +%s.%N)
-    "$gonio" render "$scene" > /dev/null
-    end=$(date +%s.%N)
-    best=$(awk -v a="$start" -v b="$end" -v best="$best" \
-        'BEGIN { d = b - a; if (best == "" || d < best) best = d; printf "%.3f", best }')
-done
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
-     "load $(cut -d' ' -f1-3 /proc/loadavg)"
+best=$(best_of 3 "$work" "$gonio" render "$scene")
+machine_line
 echo "grass_field.rib (640x480, 16 spp, brdf() baked), gonio render: $best s (best of 3)"

@@ -9,7 +9,6 @@
 #   bench/render/run_pixie_pairs.sh [--threads "1 2"]      (GONIO=path/to/gonio, PIXIE=...)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-here=$(pwd)
 gonio=$(realpath "${GONIO:-build/bin/gonio}")
 threads="1 2"
 [[ "${1:-}" == "--threads" ]] && threads=$2
@@ -28,22 +27,8 @@ if [[ -n "${PIXIE:-}" ]]; then
     (cd "$work/pixie" && "$PIXIE/bin/sdrc" mirror.sl > /dev/null)
 fi
 
-# best_of N DIR COMMAND...: the shortest wall-clock time of N runs in DIR, in seconds.
-best_of() {
-    local runs=$1 dir=$2 best="" start end
-    shift 2
-    for ((k = 0; k < runs; ++k)); do
-        start=$(date +%s.%N)
-        (cd "$dir" && "$@" > /dev/null 2>&1)
-        end=$(date +%s.%N)
-        best=$(awk -v a="$start" -v b="$end" -v best="$best" \
-            'BEGIN { d = b - a; if (best == "" || d < best) best = d; printf "%.3f", best }')
-    done
-    echo "$best"
-}
-
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
-     "load $(cut -d' ' -f1-3 /proc/loadavg)"
+source bench/render/timing.sh
+machine_line
 printf '%-16s %7s %10s %14s %10s %8s\n' scene threads gonio every-sample pixie ratio
 for scene in $scenes; do
     for t in $threads; do
@@ -57,4 +42,3 @@ for scene in $scenes; do
         printf '%-16s %7s %10s %14s %10s %8s\n' "$scene" "$t" "$g" "$e" "$p" "$ratio"
     done
 done
-cd "$here"

@@ -16,8 +16,8 @@ for basis in rgb bands sampled; do
     { echo "Option \"spectral\" \"string basis\" \"$basis\" \"int bands\" [16]"
       cat bench/render/spheres400.rib; } > "$work/$basis.rib"
 done
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
-     "load $(cut -d' ' -f1-3 /proc/loadavg)"
+source bench/render/timing.sh
+machine_line
 declare -A best
 for ((k = 0; k < 3; ++k)); do
     for basis in rgb bands sampled; do

@@ -12,23 +12,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 printf 'Format 1 1 1\nDisplay "empty.tif" "tiff" "rgba"\nWorldBegin\nWorldEnd\n' > "$work/empty.rib"
 
-# best_of N COMMAND...: the shortest wall-clock time of N runs, in seconds.
-best_of() {
-    local runs=$1 best="" start end
-    shift
-    for ((k = 0; k < runs; ++k)); do
-        start=$(date +%s.%N)
-        (cd "$work" && "$@" > /dev/null)
-        end=$(date +%s.%N)
-        best=$(awk -v a="$start" -v b="$end" -v best="$best" \
-            'BEGIN { d = b - a; if (best == "" || d < best) best = d; printf "%.3f", best }')
-    done
-    echo "$best"
-}
-
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
-     "load $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "start-up, gonio --help:              $(best_of 3 "$gonio" --help) s (best of 3)"
-echo "start-up + write, empty 1x1 render:  $(best_of 3 "$gonio" render "$work/empty.rib") s"
-echo "spheres400.rib, gonio render:        $(best_of 3 "$gonio" render "$scene") s"
-echo "spheres400.rib, --threads 1:         $(best_of 3 "$gonio" render "$scene" --threads 1) s"
+source bench/render/timing.sh
+machine_line
+echo "start-up, gonio --help:              $(best_of 3 "$work" "$gonio" --help) s (best of 3)"
+echo "start-up + write, empty 1x1 render:  $(best_of 3 "$work" "$gonio" render "$work/empty.rib") s"
+echo "spheres400.rib, gonio render:        $(best_of 3 "$work" "$gonio" render "$scene") s"
+echo "spheres400.rib, --threads 1:         $(best_of 3 "$work" "$gonio" render "$scene" --threads 1) s"

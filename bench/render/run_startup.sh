@@ -39,8 +39,8 @@ print("%.1f ms (CPU %.1f ms)" % (1000 * r["median"], 1000 * (r["user"] + r["syst
         awk '{ t[NR] = $1 } END { printf "%.1f ms\n", t[int((NR + 1) / 2)] / 1000 }'
 }
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
-     "load $(cut -d' ' -f1-3 /proc/loadavg)"
+source bench/render/timing.sh
+machine_line
 echo "gonio: $gonio ($(ldd "$gonio" | wc -l) shared libraries)"
 echo "catrib, 2-line RIB:        $(median "$gonio" catrib "$work/two.rib")"
 echo "shader plastic.sl:         $(median "$gonio" shader "$shader")"
