@@ -40,44 +40,31 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
         const float dx = cx - fx - 0.5f, dy = cy - fy - 0.5f;
         cells_[i] = {(long long)fx, (long long)fy, dx * dx + dy * dy, i};
     }
-    // Within a cell, the hits nearest its centre come first and are the ones shaded: shading
-    // the first sample instead would shift every highlight and texture by most of a stratum
-    // towards the cell's corner. Ties go to the earlier sample, so the order is fixed.
-    auto sameCell = [](const CellEntry& a, const CellEntry& b) {
-        return a.cellY == b.cellY && a.cellX == b.cellX;
-    };
+    // Hits come in sample order, pixel by pixel, so at rates up to a pixel their cells are
+    // already in order; otherwise group them, keeping sample order within a cell.
     auto cellBefore = [](const CellEntry& a, const CellEntry& b) {
         return a.cellY != b.cellY ? a.cellY < b.cellY : a.cellX < b.cellX;
     };
-    auto before = [&](const CellEntry& a, const CellEntry& b) {
-        if (!sameCell(a, b)) return cellBefore(a, b);
-        if (a.centreDistance != b.centreDistance) return a.centreDistance < b.centreDistance;
-        return a.hit < b.hit;
+    if (!std::is_sorted(cells_.begin(), cells_.end(), cellBefore))
+        std::stable_sort(cells_.begin(), cells_.end(), cellBefore);
+    // Within a cell, the hits nearest its centre come first and are the ones shaded: shading
+    // the first sample instead would shift every highlight and texture by most of a stratum
+    // towards the cell's corner. Ties go to the earlier sample, so the order is fixed.
+    auto nearerTheCentre = [](const CellEntry& a, const CellEntry& b) {
+        return a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance
+                                                    : a.hit < b.hit;
     };
-    // Hits come in sample order, pixel by pixel, so at rates up to a pixel their cells are
-    // already in order and only each cell's few hits need sorting.
-    if (std::is_sorted(cells_.begin(), cells_.end(), cellBefore)) {
-        for (auto first = cells_.begin(); first != cells_.end();) {
-            auto last = first + 1;
-            while (last != cells_.end() && sameCell(*last, *first)) ++last;
-            std::sort(first, last, before);
-            first = last;
-        }
-    } else {
-        std::sort(cells_.begin(), cells_.end(), before);
-    }
     shadedBy->assign(size_t(n), -1);
-    for (int begin = 0; begin < n;) {
-        int end = begin + 1;
-        while (end < n && cells_[end].cellX == cells_[begin].cellX &&
-               cells_[end].cellY == cells_[begin].cellY)
-            ++end;
+    for (auto first = cells_.begin(); first != cells_.end();) {
+        auto last = first + 1;
+        while (last != cells_.end() && !cellBefore(*first, *last)) ++last;
+        std::sort(first, last, nearerTheCentre);
         // The hits of one cell: each takes the first one before it that it can share with.
-        for (int i = begin; i < end; ++i) {
-            const int hit = cells_[i].hit;
+        for (auto i = first; i != last; ++i) {
+            const int hit = i->hit;
             (*shadedBy)[hit] = hit;
-            for (int j = begin; j < i; ++j) {
-                const int candidate = cells_[j].hit;
+            for (auto j = first; j != i; ++j) {
+                const int candidate = j->hit;
                 if ((*shadedBy)[candidate] != candidate) continue;
                 if (CanShare(hits[hit], hits[candidate], cell)) {
                     (*shadedBy)[hit] = candidate;
@@ -85,7 +72,7 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
                 }
             }
         }
-        begin = end;
+        first = last;
     }
     // Number the shaded hits in sample order and point every hit at its number.
     shaded->clear();
