@@ -200,16 +200,24 @@ def idiff_same(a, b):
     return r.returncode == 0, r.stdout
 
 
+def expect_tiles_join_to_the_unsplit_render(farm, job_name, scene, full, render_args,
+                                             plan_args, frame_image, what):
+    """Renders `scene` whole into `full`, then as the tile job `job_name`; the joined frame
+    must equal the whole render pixel for pixel."""
+    farm.run("render", scene, *render_args, "-o", full)
+    job = farm.plan(job_name, scene, *plan_args)
+    code, log = farm.submit(job_name)
+    expect(code == 0, f"the {what} job failed:\n{log}")
+    same, text = idiff_same(os.path.join(job, "images", frame_image),
+                            os.path.join(farm.work, full))
+    expect(same, f"the joined {what} differ from the unsplit render:\n{text}")
+
+
 def check_cropped_tiles(farm):
     """3x2 tiles of a scene with its own CropWindow, in float OpenEXR."""
-    scene = os.path.join(HERE, "scenes", "crop.rib")
-    farm.run("render", scene, "-o", "crop_full.exr")
-    job = farm.plan("cropped", scene, "--tiles", "3x2")
-    code, log = farm.submit("cropped")
-    expect(code == 0, f"the cropped tile job failed:\n{log}")
-    same, text = idiff_same(os.path.join(job, "images", "frame_0000.exr"),
-                            os.path.join(farm.work, "crop_full.exr"))
-    expect(same, f"tiles of a CropWindow joined differ from the unsplit render:\n{text}")
+    expect_tiles_join_to_the_unsplit_render(
+        farm, "cropped", os.path.join(HERE, "scenes", "crop.rib"), "crop_full.exr", [],
+        ["--tiles", "3x2"], "frame_0000.exr", "tiles of a CropWindow")
     print("tiles: 3x2 tiles of a CropWindow joined, identical to the unsplit render", flush=True)
 
 
@@ -255,14 +263,10 @@ def check_errors(farm):
 
 
 def check_tiles(farm, scene):
-    farm.run("render", scene, "--frames", "1", "-o", "full_1.tif")
-    job = farm.plan("tiles", scene, "--frames", "1", "--tiles", "4x4", "--chunk", "4",
-                    "--throttle", "2")
-    code, log = farm.submit("tiles")
-    expect(code == 0, f"the 4x4-tile job failed:\n{log}")
-    same, text = idiff_same(os.path.join(job, "images", "frame_0001.tif"),
-                            os.path.join(farm.work, "full_1.tif"))
-    expect(same, f"the joined 4x4 tiles differ from the unsplit render:\n{text}")
+    expect_tiles_join_to_the_unsplit_render(
+        farm, "tiles", scene, "full_1.tif", ["--frames", "1"],
+        ["--frames", "1", "--tiles", "4x4", "--chunk", "4", "--throttle", "2"],
+        "frame_0001.tif", "4x4 tiles")
     print("tiles: 16 tiles joined, identical to the unsplit render", flush=True)
 
 
