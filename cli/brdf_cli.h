@@ -23,6 +23,10 @@ class UsageError : public std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
+// Throws a UsageError when the output names one of the inputs (`brdf opt 4 8 17deg 0 a.pm a.pm`
+// would replace the photon map with the grid made from it).
+void RefuseToOverwriteAnInput(const std::vector<std::string>& inputs, const std::string& output);
+
 // The splat radius: radians as in the thesis (0.3), or degrees with a "deg" suffix (17deg).
 double ParseSpread(const std::string& text);
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "base/math.h"
@@ -38,6 +39,15 @@ int RunGuarded(const std::string& name, const std::function<void()>& body) {
         return fail(e, 2);
     } catch (const std::exception& e) {
         return fail(e, 2);
+    }
+}
+
+void RefuseToOverwriteAnInput(const std::vector<std::string>& inputs, const std::string& output) {
+    for (const std::string& input : inputs) {
+        std::error_code error;  // an output that does not exist yet is no input
+        if (std::filesystem::equivalent(input, output, error))
+            throw UsageError("the output " + output + " is also an input (" + input +
+                             "): writing it would destroy what is being read");
     }
 }
 

@@ -22,6 +22,14 @@ namespace gonio::brdfcli {
 
 namespace {
 
+// Checked on the text, before CLI11 converts it: an unsigned option would take -5 as 2^64 - 5
+// and trace paths for ever.
+std::string PositiveCount(const std::string& text) {
+    const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+    if (digits && text.find_first_not_of('0') != std::string::npos) return {};
+    return "must be a positive whole number, got '" + text + "'";
+}
+
 void AddSynth(CLI::App& brdf, int* exitCode) {
     auto* cmd = brdf.add_subcommand(
         "synth", "draw a synthetic photon map from lambert:ALBEDO or phong:KD,KS,EXPONENT");
@@ -30,7 +38,9 @@ void AddSynth(CLI::App& brdf, int* exitCode) {
     auto options = std::make_shared<SynthOptions>();
     auto brdfSampling = std::make_shared<bool>(false);
     cmd->add_option("MODEL", *model, "lambert:ALBEDO or phong:KD,KS,EXPONENT")->required();
-    cmd->add_option("-n,--paths", options->paths, "photon paths to trace")->required();
+    cmd->add_option("-n,--paths", options->paths, "photon paths to trace")
+        ->required()
+        ->check(PositiveCount);
     cmd->add_option("--seed", options->seed, "random seed")->capture_default_str();
     cmd->add_flag("--isotropic", options->isotropic, "phi_in = 0, theta_in uniform (for iopt)");
     cmd->add_flag("--stratified", options->stratified,
@@ -87,6 +97,7 @@ void AddMerge(CLI::App& brdf, int* exitCode) {
                     "bounce tags, and every traced path still counts");
     cmd->callback([=] {
         *exitCode = RunGuarded("merge", [&] {
+            RefuseToOverwriteAnInput(*inputs, *out);
             const BounceRange range = bounces->empty() ? BounceRange{} : ParseBounceRange(*bounces);
             const PhotonMapHeader total =
                 MergePhotonMaps(*inputs, *out, bounces->empty() ? nullptr : &range);
@@ -113,6 +124,7 @@ void RunOpt(const OptArgs& args, bool isotropic) {
     params.horizon = ParseHorizon(args.horizon);
     params.isotropic = isotropic;
     if (args.rings < 1 || args.rects < 1) throw UsageError("RINGS and RECTS must be at least 1");
+    RefuseToOverwriteAnInput({args.input}, args.output);
     std::fprintf(stderr, "reading %s\n", args.input.c_str());
     const PhotonMap map = ReadPhotonMap(args.input);
     auto splats = std::make_shared<const SplatSet>(map, params);

@@ -22,7 +22,8 @@ std::string WriteExrFile(const std::string& path, const ImageFileSpec& spec,
 std::string WriteZfileFile(const std::string& path, const ImageFileSpec& spec,
                            const PixelBuffer& pixels);
 
-// "YYYY:MM:DD hh:mm:ss" in local time, the DateTime OpenImageIO records in TIFF and OpenEXR.
+// "YYYY:MM:DD hh:mm:ss" in local time, the DateTime OpenImageIO records in TIFF and OpenEXR, or
+// $SOURCE_DATE_EPOCH in UTC when that is set.
 std::string CurrentDateTime();
 
 // The compression name and quality of a "name:quality" Display parameter (quality -1 if none).

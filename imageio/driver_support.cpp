@@ -8,11 +8,18 @@
 namespace gonio {
 
 std::string CurrentDateTime() {
-    const std::time_t now = std::time(nullptr);
-    std::tm local{};
-    localtime_r(&now, &local);
+    // SOURCE_DATE_EPOCH (reproducible-builds.org's convention, in UTC) fixes the stamp, so that
+    // two renders of a scene give byte-identical TIFF and OpenEXR files.
+    std::tm time{};
+    if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"); epoch && *epoch) {
+        const std::time_t fixed = std::strtoll(epoch, nullptr, 10);
+        gmtime_r(&fixed, &time);
+    } else {
+        const std::time_t now = std::time(nullptr);
+        localtime_r(&now, &time);
+    }
     char text[32];
-    std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);
+    std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &time);
     return text;
 }
 

@@ -3,6 +3,7 @@
 
 #include "renderer/rib/rib_file_parser.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -87,13 +88,17 @@ RibFileParser::RibFileParser(RibSession& session, std::shared_ptr<const std::str
 int RibFileParser::ReadInput(char* buffer, int maxSize) {
     if (!input_ || readFailed_) return 0;
     const int got = gzread(input_, buffer, static_cast<unsigned>(maxSize));
-    if (got >= 0) return got;
     int code = 0;
     const char* why = gzerror(input_, &code);
+    // gzread hands over what it could decompress of a cut stream and flags the early end as
+    // Z_BUF_ERROR only through gzerror: without this check a truncated .rib.gz renders its first
+    // frames and exits 0.
+    if (got >= 0 && code != Z_BUF_ERROR) return got;
     if (code == Z_ERRNO) why = std::strerror(errno);
+    if (code == Z_BUF_ERROR) why = "the compressed stream ends early (the file is truncated)";
     session_.Error(Loc(line, column), std::string("cannot read the file: ") + why);
     readFailed_ = true;
-    return 0;
+    return std::max(got, 0);
 }
 
 bool RibFileParser::ParseNumber(const char* text, int length, double* value) {

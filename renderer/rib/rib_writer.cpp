@@ -2,15 +2,23 @@
 
 #include "renderer/rib/rib_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 
 namespace gonio {
 
+void RibWriter::Indent() {
+    // Deeper blocks are not indented further: output grows linearly with the input, where
+    // 10,000 nested blocks would otherwise print 200 MB of spaces.
+    constexpr int kMaxIndentLevels = 16;
+    for (int i = 0; i < std::min(depth_, kMaxIndentLevels); ++i) out_ << "    ";
+}
+
 template <typename... Values>
 void RibWriter::Emit(const char* request, const Values&... values) {
-    for (int i = 0; i < depth_; ++i) out_ << "    ";
+    Indent();
     out_ << request;
     (Put(values), ...);
     out_ << '\n';
@@ -136,7 +144,7 @@ void RibWriter::MakeCubeFaceEnvironment(const std::vector<std::string>& faces,
                                         const std::string& texture, float fov,
                                         const std::string& filter, float swidth, float twidth,
                                         const ParamList& params, const FileLoc&) {
-    for (int i = 0; i < depth_; ++i) out_ << "    ";
+    Indent();
     out_ << "MakeCubeFaceEnvironment";
     for (const std::string& face : faces) Put(face);
     Put(texture);

@@ -163,6 +163,7 @@ class RibWriter : public RiTarget {
   private:
     template <typename... Values>
     void Emit(const char* request, const Values&... values);
+    void Indent();
     void BeginBlock(const char* request) { Emit(request), ++depth_; }
     void EndBlock(const char* request);
 

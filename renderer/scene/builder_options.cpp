@@ -23,6 +23,12 @@ void SceneBuilder::Format(int xres, int yres, float pixelAspect, const FileLoc& 
                                     "x" + std::to_string(yres));
         return;
     }
+    if (xres > kMaxResolution || yres > kMaxResolution) {
+        diagnostics_.Error(loc, "Format " + std::to_string(xres) + " " + std::to_string(yres) +
+                                    ": the resolution must be at most " +
+                                    std::to_string(kMaxResolution) + " in each direction");
+        return;
+    }
     state_->options.xres = xres;
     state_->options.yres = yres;
     state_->options.formatLoc = loc;
