@@ -91,17 +91,18 @@ std::string PhotonSummary(const std::string& output, const PhotonStats& s) {
 bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
                       PhotonStats* stats) {
     BrdfLightOptions options;
-    if (!ReadBrdfLightOptions(frame, diagnostics, &options)) return false;
+    // Scene errors are reported and return true: the render exits 1 for them, 2 only when the
+    // map cannot be written.
+    if (!ReadBrdfLightOptions(frame, diagnostics, &options)) return true;
     const std::string output =
         settings.outputOverride.empty() ? options.textureName : settings.outputOverride;
     if (frame.shapes.empty() && frame.instances.empty()) {
         diagnostics.Error(options.loc,
                           "BRDFLight: the scene has no geometry to trace photons through "
                           "(expected micro geometry between WorldBegin and WorldEnd)");
-        return false;
+        return true;
     }
     if (!CheckWritable(output, options.loc, diagnostics)) return false;
-    // A scene error (exit 1), not an output one: reported, nothing traced.
     // Each path's random numbers depend on the seed and its index only (photon_tracer.h), so
     // the shards' maps, merged in shard order, are the unsplit run's map row for row.
     const ShardRange shard =

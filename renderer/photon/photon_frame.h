@@ -10,9 +10,10 @@
 
 namespace gonio {
 
-// Reads the options, traces and writes the map. Returns false if nothing usable was written
-// (every reason already reported): bad options, no geometry, an unwritable output. The
-// summary goes to stderr; `stats`, when given, receives the counts.
+// Reads the options, traces and writes the map. Returns false only when the map could not be
+// written (an output error, exit 2). Scene errors (bad options, no geometry, a bad micro BRDF,
+// more photons than memory holds) are reported, nothing is traced, and it returns true: the
+// error count gives exit 1. The summary goes to stderr; `stats`, when given, receives the counts.
 bool TracePhotonFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
                       PhotonStats* stats = nullptr);
 

@@ -78,6 +78,15 @@ CASES = [
      2, "--paths: must be a positive whole number, got '-5'", ["x.pm"]),
     ("synth_zero_paths", ["brdf", "synth", "lambert:0.5", "-n", "0", "-o", "x.pm"], {}, None,
      2, "--paths: must be a positive whole number, got '0'", ["x.pm"]),
+    # BRDFLight scene errors are scene errors (exit 1), not output ones (2).
+    ("brdflight_negative_rays", ["render", "s.rib"],
+     {"s.rib": 'Option "BRDFLight" "string texturename" "m.pm" "integer rays" -5\n'
+               "WorldBegin\nPolygon \"P\" [0 0 0 1 0 0 1 1 0]\nWorldEnd\n"}, None,
+     1, 's.rib:1:48: error: Option "BRDFLight" "rays": expected a positive number of photon paths, got -5\n', ["m.pm"]),
+    ("brdflight_without_geometry", ["render", "s.rib"],
+     {"s.rib": 'Option "BRDFLight" "string texturename" "m.pm" "integer rays" 100\n'
+               "WorldBegin\nWorldEnd\n"}, None,
+     1, "the scene has no geometry to trace photons through", ["m.pm"]),
     # The refusal comes before anything is read, so the input need not be a real map.
     ("opt_output_is_its_input", ["brdf", "opt", "4", "8", "17deg", "0", "a.pm", "./a.pm"],
      {"a.pm": "the photon map to keep\n"}, None,
