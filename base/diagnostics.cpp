@@ -2,6 +2,12 @@
 
 namespace gonio {
 
+std::string FormatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
 std::string FileLoc::ToString() const {
     std::string text = file ? *file : std::string("<unknown>");
     if (line > 0) {

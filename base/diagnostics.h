@@ -11,6 +11,9 @@
 
 namespace gonio {
 
+// A number as messages show it, with %g: -5, 0.25, 1e+30 (std::to_string writes -5.000000).
+std::string FormatNumber(double value);
+
 enum class Severity { Note, Warning, Error };
 
 class Diagnostics {

@@ -142,17 +142,17 @@ int RunRender(const RenderOptions& options) {
     };
     BuildScene(options.scene, ReaderOf(options.scene, diagnostics), diagnostics, renderFrame);
     if (outputFailed) return 2;
-    if (!frames.Given() && rendered == 0 && diagnostics.ErrorCount() == 0) {
+    if (rendered == 0 && diagnostics.ErrorCount() == 0) {
+        if (frames.Given()) {
+            std::fprintf(stderr, "gonio render: the scene has no frame in --frames %s\n",
+                         options.frames.c_str());
+            return 2;
+        }
         std::fprintf(stderr,
                      "gonio render: error: %s has no WorldBegin ... WorldEnd, so there is no "
                      "image to render\n",
                      options.scene == "-" ? "the standard input" : options.scene.c_str());
         return 1;
-    }
-    if (frames.Given() && rendered == 0 && diagnostics.ErrorCount() == 0) {
-        std::fprintf(stderr, "gonio render: the scene has no frame in --frames %s\n",
-                     options.frames.c_str());
-        return 2;
     }
     return diagnostics.ErrorCount() > 0 ? 1 : 0;
 }

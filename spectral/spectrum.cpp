@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "base/diagnostics.h"
 #include "spectral/catmull_rom.h"
 #include "spectral/spectral_error.h"
 
@@ -13,23 +13,18 @@ namespace {
 
 constexpr double kSlack = 1e-9;  // nm: knots and grid ends closer than this are the same
 
-std::string Format(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 }  // namespace
 
 WavelengthGrid WavelengthGrid::Make(double start, double end, double step) {
-    if (!(step > 0)) throw SpectralError("wavelength step must be positive, got " + Format(step));
+    if (!(step > 0))
+        throw SpectralError("wavelength step must be positive, got " + FormatNumber(step));
     if (!(end >= start))
-        throw SpectralError("wavelength range " + Format(start) + "-" + Format(end) +
+        throw SpectralError("wavelength range " + FormatNumber(start) + "-" + FormatNumber(end) +
                             " nm is empty");
     const double steps = (end - start) / step;
     if (std::abs(steps - std::round(steps)) > 1e-6)
-        throw SpectralError("wavelength range " + Format(start) + "-" + Format(end) +
-                            " nm is not a whole number of " + Format(step) + " nm steps");
+        throw SpectralError("wavelength range " + FormatNumber(start) + "-" + FormatNumber(end) +
+                            " nm is not a whole number of " + FormatNumber(step) + " nm steps");
     return WavelengthGrid{start, end, step};
 }
 
@@ -56,8 +51,8 @@ Spectrum::Spectrum(std::vector<double> wavelengths, std::vector<double> values,
     for (size_t i = 1; i < wavelengths_.size(); ++i)
         if (!(wavelengths_[i] > wavelengths_[i - 1] + kSlack))
             throw SpectralError("spectrum wavelengths must increase (" +
-                                Format(wavelengths_[i - 1]) + " nm then " +
-                                Format(wavelengths_[i]) + " nm)");
+                                FormatNumber(wavelengths_[i - 1]) + " nm then " +
+                                FormatNumber(wavelengths_[i]) + " nm)");
     phantomBefore_ = values_.front();
     phantomAfter_ = values_.back();
 }
@@ -96,8 +91,9 @@ bool Spectrum::Covers(double lo, double hi) const {
 
 double Spectrum::Evaluate(double nm, Resampling how) const {
     if (!Covers(nm, nm))
-        throw SpectralError("wavelength " + Format(nm) + " nm is outside the spectrum's " +
-                            Format(MinWavelength()) + "-" + Format(MaxWavelength()) + " nm");
+        throw SpectralError("wavelength " + FormatNumber(nm) + " nm is outside the spectrum's " +
+                            FormatNumber(MinWavelength()) + "-" + FormatNumber(MaxWavelength()) +
+                            " nm");
     nm = std::clamp(nm, MinWavelength(), MaxWavelength());
     if (interpolation_ == Interpolation::CatmullRom && how == Resampling::Source) {
         // Thesis §6.2.2: the spline may dip below its lowest control point; an SPD may not.
@@ -113,9 +109,9 @@ double Spectrum::Evaluate(double nm, Resampling how) const {
 
 std::vector<double> Spectrum::Sample(const WavelengthGrid& grid, Resampling how) const {
     if (!Covers(grid.start, grid.end))
-        throw SpectralError("the spectrum covers " + Format(MinWavelength()) + "-" +
-                            Format(MaxWavelength()) + " nm, not the working range " +
-                            Format(grid.start) + "-" + Format(grid.end) + " nm");
+        throw SpectralError("the spectrum covers " + FormatNumber(MinWavelength()) + "-" +
+                            FormatNumber(MaxWavelength()) + " nm, not the working range " +
+                            FormatNumber(grid.start) + "-" + FormatNumber(grid.end) + " nm");
     std::vector<double> result(grid.Count());
     for (int i = 0; i < grid.Count(); ++i) result[i] = Evaluate(grid.At(i), how);
     return result;
@@ -134,12 +130,13 @@ Spectrum Spectrum::Scaled(double factor) const {
 }
 
 std::string Spectrum::DescribeSampling() const {
-    std::string text = Format(MinWavelength()) + "-" + Format(MaxWavelength()) + " nm, ";
+    std::string text =
+        FormatNumber(MinWavelength()) + "-" + FormatNumber(MaxWavelength()) + " nm, ";
     double step = 0;
     if (interpolation_ == Interpolation::CatmullRom)
         return text + std::to_string(Size()) + " Catmull-Rom knots";
     if (IsRegular(&step))
-        return text + std::to_string(Size()) + " samples at " + Format(step) + " nm";
+        return text + std::to_string(Size()) + " samples at " + FormatNumber(step) + " nm";
     return text + std::to_string(Size()) + " knots (uneven), piecewise linear";
 }
 
@@ -155,7 +152,8 @@ double PlanckRadiance(double nm, double kelvin) {
 
 Spectrum Blackbody(double kelvin, const WavelengthGrid& grid) {
     if (!(kelvin > 0))
-        throw SpectralError("blackbody temperature must be positive, got " + Format(kelvin) + " K");
+        throw SpectralError("blackbody temperature must be positive, got " + FormatNumber(kelvin) +
+                            " K");
     const double at560 = PlanckRadiance(560, kelvin);
     std::vector<double> values(grid.Count());
     for (int i = 0; i < grid.Count(); ++i)

@@ -1,7 +1,6 @@
 #include "renderer/photon/brdflight_options.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -17,10 +16,9 @@ bool ReadNumber(const ParamDict& params, const char* name, Good good, const char
     if (!p || p->numbers.empty()) return true;
     *value = p->numbers[0];
     if (good(*value)) return true;
-    char given[32];
-    std::snprintf(given, sizeof given, "%.9g", *value);  // -5, not std::to_string's -5.000000
     diagnostics.Error(params.Location(name), std::string("Option \"BRDFLight\" \"") + name +
-                                                 "\": expected " + expected + ", got " + given);
+                                                 "\": expected " + expected + ", got " +
+                                                 FormatNumber(*value));
     return false;
 }
 

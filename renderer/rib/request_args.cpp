@@ -3,8 +3,8 @@
 #include <cfloat>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 
+#include "base/diagnostics.h"
 #include "renderer/rib/request_table.h"
 
 namespace gonio {
@@ -27,12 +27,6 @@ bool IsNumberSignature(std::string_view signature) {
 
 std::string Plural(std::size_t count, const char* noun) {
     return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
-}
-
-std::string FormatNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
 }
 
 }  // namespace
