@@ -100,6 +100,8 @@ void PrintRepresentationErrors(const std::vector<std::string>& lights,
         const int k = svdK > 0 ? svdK : most;
         PrintRow(lights[l], EvaluateRepresentation(scene, RepresentationKind::SvdExactDirect, k),
                  svdK > 0 ? "smallest k" : "no k meets the target; k = all surfaces");
+        PrintRow(lights[l], EvaluateRepresentation(scene, RepresentationKind::SvdRendered, k),
+                 "as basis \"svd\" renders it: second bounce component-wise");
         PrintRow(lights[l], EvaluateRepresentation(scene, RepresentationKind::SvdEq69, k),
                  "thesis eq. 6.9 as written: wrong for an SVD basis");
         // The k the patch test (tests/spectral) checks, for comparison.

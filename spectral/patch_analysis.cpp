@@ -31,6 +31,8 @@ std::string RepresentationName(RepresentationKind kind, int k) {
             return "bands-" + std::to_string(k);
         case RepresentationKind::SvdExactDirect:
             return "svd-" + std::to_string(k) + " exact-direct";
+        case RepresentationKind::SvdRendered:
+            return "svd-" + std::to_string(k) + " rendered";
         case RepresentationKind::SvdEq69:
             return "svd-" + std::to_string(k) + " eq. 6.9";
     }
@@ -72,6 +74,8 @@ int MaxK(const PatchScene& scene, RepresentationKind kind) {
         case RepresentationKind::SvdExactDirect:
         case RepresentationKind::SvdEq69:
             return int(std::min(scene.reflectances.rows(), scene.reflectances.cols()));
+        case RepresentationKind::SvdRendered:  // completed to the samples (LightSvdBasis)
+            return int(scene.light.size());
     }
     return 0;
 }
@@ -89,6 +93,9 @@ RepresentationError EvaluateRepresentation(const PatchScene& scene, Representati
             break;
         case RepresentationKind::SvdExactDirect:
             colours = SvdExactDirectColours(scene, k);
+            break;
+        case RepresentationKind::SvdRendered:
+            colours = SvdRenderedColours(scene, k);
             break;
         case RepresentationKind::SvdEq69:
             colours = SvdEq69Colours(scene, k);

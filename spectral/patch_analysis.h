@@ -11,7 +11,7 @@
 
 namespace gonio::spectral {
 
-enum class RepresentationKind { Rgb, Bands, SvdExactDirect, SvdEq69 };
+enum class RepresentationKind { Rgb, Bands, SvdExactDirect, SvdRendered, SvdEq69 };
 
 struct ErrorStats {
     double mean = 0;
@@ -25,7 +25,7 @@ struct RepresentationError {
     ErrorStats twoBounce;
 };
 
-// "rgb", "bands-16", "svd-6 exact-direct", "svd-6 eq. 6.9".
+// "rgb", "bands-16", "svd-6 exact-direct", "svd-6 rendered", "svd-6 eq. 6.9".
 std::string RepresentationName(RepresentationKind kind, int k);
 
 // Resamples everything onto `grid` (each spectrum by its own interpolation) and builds the scene.

@@ -1,5 +1,8 @@
 #include "spectral/render_color_space.h"
 
+#include <cmath>
+#include <string>
+
 #include "spectral/colorimetry.h"
 #include "spectral/spectral_error.h"
 
@@ -105,6 +108,68 @@ RenderColorSpace BandColorSpace(const WavelengthGrid& grid, const std::vector<in
         if (!(w.sum() > 0)) w.setOnes();
         fromSamples.block(b, first, 1, count) = w.transpose() / w.sum();
         toRgb.col(b) = samplesToRgb.middleCols(first, count) * w * (w.sum() / w.squaredNorm());
+    }
+    const Eigen::MatrixXd fromRgb = UpliftSpectra(samplesToRgb) * fromSamples.transpose();
+    return MakeSpace(grid, toRgb, fromRgb, fromSamples);
+}
+
+namespace {
+
+// A rotation taking the unit vector `from` to the unit vector `to`: the Householder reflection
+// across their bisector, or I when they coincide.
+Eigen::MatrixXd Reflection(const Eigen::VectorXd& from, const Eigen::VectorXd& to) {
+    const Eigen::VectorXd v = from - to;
+    Eigen::MatrixXd h = Eigen::MatrixXd::Identity(from.size(), from.size());
+    if (v.squaredNorm() > 1e-24) h -= 2 * v * v.transpose() / v.squaredNorm();
+    return h;
+}
+
+}  // namespace
+
+Eigen::MatrixXd LightSvdBasis(const Eigen::VectorXd& light,
+                              const std::vector<Eigen::VectorXd>& surfaces, int k) {
+    const Eigen::Index n = light.size();
+    if (k < 1 || k > n)
+        throw SpectralError("svd: " + std::to_string(k) + " vectors, expected 1 to the " +
+                            std::to_string(n) + " samples");
+    Eigen::MatrixXd once(n, Eigen::Index(surfaces.size()) + 1);
+    once.col(0) = light;
+    for (size_t j = 0; j < surfaces.size(); ++j) {
+        if (surfaces[j].size() != n)
+            throw SpectralError("svd: a surface must have one value per sample");
+        once.col(Eigen::Index(j) + 1) = light.cwiseProduct(surfaces[j]);
+    }
+    // Thesis §6.1.2: [U, S, V] = svd(O); the first k columns of U are the optimal basis.
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(once, Eigen::ComputeFullU);
+    const Eigen::MatrixXd u = svd.matrixU().leftCols(k);
+    // R = (|a| / √k) H with H a rotation taking 1/√k to a/|a|, a = U_kᵀ l: then white's
+    // coordinates R⁻¹ U_kᵀ l are all 1 (U_k R 1 = U_k a, the light's projection), and R is a
+    // rotation times a scale, as well conditioned as U_k.
+    const Eigen::VectorXd a = u.transpose() * light;
+    if (!(a.norm() > 0)) return u;
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(k) / std::sqrt(double(k));
+    return u * (a.norm() / std::sqrt(double(k))) * Reflection(ones, a.normalized());
+}
+
+RenderColorSpace SvdColorSpace(const WavelengthGrid& grid, const std::vector<SvdBlock>& blocks) {
+    const int n = grid.Count();
+    Eigen::Index components = 0;
+    for (const SvdBlock& block : blocks) {
+        if (block.light.size() != n || block.basis.rows() != n)
+            throw SpectralError("svd: a light and its basis must have one value per sample");
+        components += block.basis.cols();
+    }
+    const Eigen::MatrixXd samplesToRgb = RgbOfSamples(grid);
+    Eigen::MatrixXd fromSamples(components, n), toRgb(3, components);
+    Eigen::Index first = 0;
+    for (const SvdBlock& block : blocks) {
+        const Eigen::Index k = block.basis.cols();
+        // The coordinates of l_b∘r: the basis's pseudo-inverse after the light.
+        fromSamples.middleRows(first, k) =
+            block.basis.completeOrthogonalDecomposition().pseudoInverse() *
+            block.light.asDiagonal();
+        toRgb.middleCols(first, k) = samplesToRgb * block.basis;
+        first += k;
     }
     const Eigen::MatrixXd fromRgb = UpliftSpectra(samplesToRgb) * fromSamples.transpose();
     return MakeSpace(grid, toRgb, fromRgb, fromSamples);

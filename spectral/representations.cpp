@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "spectral/render_color_space.h"
 #include "spectral/spectral_error.h"
 
 namespace gonio::spectral {
@@ -208,6 +209,22 @@ BounceColours SvdExactDirectColours(const PatchScene& scene, int k) {
     BounceColours colours{response * direct, {}};
     colours.twoBounce = TwoBounce(m, [&](int j1, int j2) -> Eigen::Vector3d {
         return response * (operators[j2] * direct.col(j1));
+    });
+    return colours;
+}
+
+BounceColours SvdRenderedColours(const PatchScene& scene, int k) {
+    const int m = SurfaceCount(scene);
+    std::vector<Eigen::VectorXd> surfaces;
+    for (int j = 0; j < m; ++j) surfaces.push_back(scene.reflectances.col(j));
+    const Eigen::MatrixXd basis = LightSvdBasis(scene.light, surfaces, k);
+    const Eigen::Matrix3Xd response = scene.observer.cmf * basis;
+    const Eigen::MatrixXd once = scene.reflectances.array().colwise() * scene.light.array();
+    // The coordinates SvdColorSpace stores for each surface: those of l∘r_j (least squares).
+    const Eigen::MatrixXd stored = basis.completeOrthogonalDecomposition().solve(once);
+    BounceColours colours{response * stored, {}};
+    colours.twoBounce = TwoBounce(m, [&](int j1, int j2) -> Eigen::Vector3d {
+        return response * stored.col(j1).cwiseProduct(stored.col(j2));
     });
     return colours;
 }

@@ -8,7 +8,11 @@
 //  bands-k          k box bands, edges from the scene's one-bounce spectra, products per band
 //  svd-k exact      thesis §6.1.2 basis (first k left singular vectors of the one-bounce
 //                   matrix); each surface stored as the coefficients of its product with the
-//                   light, so direct light is the exact projection (§6.1.3)
+//                   light, so direct light is the exact projection (§6.1.3); a second bounce
+//                   through the k×k projected operator Bᵀ diag(r) B
+//  svd-k rendered   what Option "spectral" "basis" "svd" renders: the basis of
+//                   render_color_space.h's LightSvdBasis, direct light projected as above, and
+//                   a second bounce multiplying coordinates component by component
 //  svd-k eq. 6.9    the thesis's eq. 6.9 as written: coefficients multiplied component by
 //                   component. Wrong for an SVD basis, whose vectors overlap; kept to measure it
 //
@@ -49,6 +53,7 @@ BounceColours BandColours(const PatchScene& scene, int k);
 // signed so its samples sum to ≥ 0. 1 ≤ k ≤ min(n, m).
 Eigen::MatrixXd SvdBasis(const PatchScene& scene, int k);
 BounceColours SvdExactDirectColours(const PatchScene& scene, int k);
+BounceColours SvdRenderedColours(const PatchScene& scene, int k);
 BounceColours SvdEq69Colours(const PatchScene& scene, int k);
 
 }  // namespace gonio::spectral

@@ -104,6 +104,7 @@ void SceneBuilder::LightSource(const std::string& name, const RtHandle& handle,
 
 void SceneBuilder::AddLight(SceneLight light) {
     const int index = static_cast<int>(state_->frame.lights.size());
+    ApplyPlannedLightColor(index, &light.light);
     state_->lightHandles[HandleKey(light.light.handle)] = index;
     state_->frame.lights.push_back(std::move(light));
     MutableAttributes().activeLights.insert(index);

@@ -1,16 +1,21 @@
 // Option "spectral" (a RIB extension, docs/rib-support.md): the representation of colour.
 //
 //   Option "spectral" "string basis" "sampled" "float[2] range" [380 780] "float step" [5]
-//                     "int bands" [16]
+//                     "int bands" [16] "int vectors" [6]
 //
 // "sampled": one colour component per wavelength of the range (81 at 5 nm over 380-780 nm by
 // default), with ColorSamples' matrices from spectral/render_color_space.h, so that every
 // shader, photon map and .grd carries spectra unchanged. "bands": "bands" averages over bands of
-// those samples, the bands chosen for each frame from its own spectra (band_plan.h). "rgb": three
-// components, as without the option, and a colour given as a spectrum is reduced to its RGB, as an
-// RGB renderer does. The error of each is measured by `gonio spectral patches`.
+// those samples; "svd": "vectors" coordinates per light spectrum in a basis of what it makes the
+// surfaces reflect; both chosen for each frame from its own spectra (color_plan.h). "rgb": three
+// components, as without the option, and a colour given as a spectrum is reduced to its RGB, as
+// an RGB renderer does. The error of each is measured by `gonio spectral patches`.
+
+#include <algorithm>
+#include <utility>
 
 #include "base/limits.h"
+#include "renderer/rib/declarations.h"
 #include "renderer/scene/scene_builder_state.h"
 #include "renderer/scene/scene_spectra.h"
 #include "spectral/render_color_space.h"
@@ -26,35 +31,35 @@ void SceneBuilder::SetColorComponents(int n, std::vector<float> toRgb, std::vect
     state_->options.wavelengths = std::move(wavelengths);
     state_->options.colorFromSamples.clear();
     state_->options.spectraAsRgb = false;
-    state_->options.bands = 0;
     MutableAttributes().color.assign(n, 1.f);
     MutableAttributes().opacity.assign(n, 1.f);
 }
 
-void SceneBuilder::SetColorSpace(const spectral::RenderColorSpace& space, int bands) {
+void SceneBuilder::SetColorSpace(const spectral::RenderColorSpace& space) {
     SetColorComponents(int(space.toRgb.size() / 3), space.toRgb, space.fromRgb,
                        space.grid.Wavelengths());
     state_->options.colorFromSamples = space.fromSamples;
-    state_->options.bands = bands;
 }
 
-void SceneBuilder::SetBandPlan(BandPlan plan) { state_->bandPlan = std::move(plan); }
+void SceneBuilder::SetColorPlan(ColorPlan plan) { state_->colorPlan = std::move(plan); }
 
 void SceneBuilder::SpectralOption(const ParamDict& params, const FileLoc& loc) {
     const std::string basis = params.GetString("basis", "sampled");
+    state_->options.bands = state_->options.svdVectors = 0;
     if (basis == "rgb") {
         SetColorComponents(3, {}, {}, {});
         state_->options.spectraAsRgb = true;
         return;
     }
-    if (basis != "sampled" && basis != "bands") {
+    if (basis != "sampled" && basis != "bands" && basis != "svd") {
         diagnostics_.Error(params.Location("basis"),
                            "Option \"spectral\": basis \"" + basis +
-                               "\" is not one a render can use (expected \"sampled\", \"bands\" "
-                               "or \"rgb\"; `gonio spectral patches` measures svd)");
+                               "\" is not one a render can use (expected \"sampled\", \"bands\", "
+                               "\"svd\" or \"rgb\")");
         return;
     }
     const int bands = basis == "bands" ? int(params.GetNumber("bands", 16)) : 0;
+    const int vectors = basis == "svd" ? int(params.GetNumber("vectors", 6)) : 0;
     double start = 380, end = 780;
     if (const TypedParam* range = params.Find("range")) {
         if (range->numbers.size() != 2) {
@@ -73,33 +78,54 @@ void SceneBuilder::SpectralOption(const ParamDict& params, const FileLoc& loc) {
                                         " (a larger step?)");
             return;
         }
-        if (basis == "bands" && (bands < 1 || bands > grid.Count())) {
-            diagnostics_.Error(params.Location("bands"),
-                               "Option \"spectral\": \"bands\" must be 1 to the " +
-                                   std::to_string(grid.Count()) + " samples of the range");
+        const auto [countName, count] =
+            basis == "bands" ? std::pair{"bands", bands} : std::pair{"vectors", vectors};
+        if (basis != "sampled" && (count < 1 || count > grid.Count())) {
+            diagnostics_.Error(params.Location(countName), std::string("Option \"spectral\": \"") +
+                                                               countName + "\" must be 1 to the " +
+                                                               std::to_string(grid.Count()) +
+                                                               " samples of the range");
             return;
         }
-        SetColorSpace(spectral::SampledColorSpace(grid), bands);
+        SetColorSpace(spectral::SampledColorSpace(grid));
+        state_->options.bands = bands;
+        state_->options.svdVectors = vectors;
     } catch (const spectral::SpectralError& e) {
         diagnostics_.Error(params.FirstLocation().line ? params.FirstLocation() : loc,
                            std::string("Option \"spectral\": ") + e.what());
     }
 }
 
-void SceneBuilder::ApplyBandPlan(int ordinal) {
-    if (state_->options.bands == 0) return;
-    const spectral::WavelengthGrid grid = FrameGrid(state_->options);
-    const auto choice = state_->bandPlan.find(ordinal);
-    if (choice == state_->bandPlan.end()) {
-        // Not chosen yet: built sampled, for ChooseBands.
-        SetColorSpace(spectral::SampledColorSpace(grid), state_->options.bands);
-        return;
+void SceneBuilder::ApplyColorPlan(int ordinal) {
+    state_->colorChoice = nullptr;
+    if (!state_->options.FitsColorSpaceToFrame()) return;
+    const auto choice = state_->colorPlan.find(ordinal);
+    const int bands = state_->options.bands, vectors = state_->options.svdVectors;
+    if (choice == state_->colorPlan.end()) {
+        // Not chosen yet: built sampled, for ChooseColorSpace.
+        SetColorSpace(spectral::SampledColorSpace(FrameGrid(state_->options)));
+    } else {
+        SetColorSpace(choice->second.space);
+        state_->colorChoice = &choice->second;
     }
-    const std::vector<double>& light = choice->second.light;
-    SetColorSpace(spectral::BandColorSpace(
-                      grid, choice->second.edges,
-                      Eigen::Map<const Eigen::VectorXd>(light.data(), Eigen::Index(light.size()))),
-                  state_->options.bands);
+    // The next frame that asks for it is fitted to its own spectra again.
+    state_->options.bands = bands, state_->options.svdVectors = vectors;
+}
+
+void SceneBuilder::ApplyPlannedLightColor(int index, LightInstance* light) const {
+    if (!state_->colorChoice || state_->colorChoice->lightColors.empty()) return;
+    const std::vector<float>& colour = state_->colorChoice->lightColors.at(size_t(index));
+    Param planned{"color lightcolor",
+                  std::vector<double>(colour.begin(), colour.end()),
+                  {},
+                  false,
+                  light->shader.loc};
+    ParamList& params = light->shader.params;
+    for (Param& p : params)
+        if (TokenName(p.token) == "lightcolor") p = planned;
+    if (std::none_of(params.begin(), params.end(),
+                     [](const Param& p) { return TokenName(p.token) == "lightcolor"; }))
+        params.push_back(planned);
 }
 
 }  // namespace gonio

@@ -54,13 +54,16 @@ struct Options {
     // Option "spectral": the wavelengths (nm) spectra are sampled at; under "sampled" each is a
     // colour component. Empty: the components are RGB, or whatever ColorSamples made them.
     std::vector<double> wavelengths;
-    // "bands": k rows of wavelengths.size(), the components of a sampled spectrum. Empty: the
-    // components are the samples.
+    // "bands", "svd": k rows of wavelengths.size(), the components of a sampled spectrum. Empty:
+    // the components are the samples.
     std::vector<float> colorFromSamples;
-    // "bands": the number of bands asked for. Their edges are chosen for each frame from its own
-    // spectra (renderer/scene/band_plan.h); until then (colorFromSamples empty) the frame is
-    // built sampled.
+    // "bands": the number of bands asked for; "svd": the number of basis vectors per light
+    // spectrum. Both are chosen for each frame from its own spectra
+    // (renderer/scene/color_plan.h); until then (colorFromSamples empty) the frame is built
+    // sampled.
     int bands = 0;
+    int svdVectors = 0;
+    bool FitsColorSpaceToFrame() const { return bands > 0 || svdVectors > 0; }
     // Option "spectral" "basis" "rgb": colours given as spectra are reduced to their RGB first,
     // as an RGB renderer must (the RGB image of thesis fig. 6.5).
     bool spectraAsRgb = false;

@@ -146,7 +146,7 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
     state_->options.cameraMotionTimes = state_->transformTimes;
     state_->options.cameraMotion = state_->transformSamples;
     state_->inWorld = true;
-    ApplyBandPlan(state_->worldsBegun);
+    ApplyColorPlan(state_->worldsBegun);
     state_->frame = Frame();
     state_->frame.number = state_->frameNumber;
     state_->frame.ordinal = state_->worldsBegun++;

@@ -15,7 +15,7 @@
 #include "renderer/geometry/geometry_result.h"
 #include "renderer/rib/declarations.h"
 #include "renderer/rib/ri_target.h"
-#include "renderer/scene/band_plan.h"
+#include "renderer/scene/color_plan.h"
 #include "renderer/scene/frame.h"
 
 namespace gonio::spectral {
@@ -33,9 +33,9 @@ class SceneBuilder : public RiTarget {
 
     // Reports blocks left open at the end of the input.
     void Finish(const FileLoc& endOfInput);
-    // The bands of the frames that ask for Option "spectral" "basis" "bands", chosen by a first
-    // build of the scene (BuildScene, scene_file.h).
-    void SetBandPlan(BandPlan plan);
+    // The colour spaces of the frames that ask for Option "spectral" "basis" "bands" or "svd",
+    // chosen by a first build of the scene (BuildScene, scene_file.h).
+    void SetColorPlan(ColorPlan plan);
 
     void Declare(const std::string& name, const std::string& declaration,
                  const FileLoc& loc) override;
@@ -220,11 +220,13 @@ class SceneBuilder : public RiTarget {
     // Sets the colour components (and their RGB matrices) and resets Color and Opacity to 1.
     void SetColorComponents(int n, std::vector<float> toRgb, std::vector<float> fromRgb,
                             std::vector<double> wavelengths);
-    // The same for a spectral colour space; `bands` > 0 for "bands" (Options::bands).
-    void SetColorSpace(const spectral::RenderColorSpace& space, int bands);
-    // At WorldBegin of a frame that asks for bands: its bands from the plan, or sampled until
-    // they are chosen.
-    void ApplyBandPlan(int ordinal);
+    // The same for a spectral colour space.
+    void SetColorSpace(const spectral::RenderColorSpace& space);
+    // At WorldBegin of a frame that asks for bands or svd: its colour space from the plan, or
+    // sampled until it is chosen.
+    void ApplyColorPlan(int ordinal);
+    // Under "svd", a light's colour is the one the plan gives it (ColorChoice::lightColors).
+    void ApplyPlannedLightColor(int index, LightInstance* light) const;
     void ConcatTransform(const M44f& m);
     void SetShader(ShaderInstance* shader, const std::string& name, const ParamList& params,
                    const FileLoc& loc);

@@ -39,7 +39,9 @@ struct SceneBuilder::State {
     bool inWorld = false;
     int frameNumber = 0;
     int worldsBegun = 0;
-    BandPlan bandPlan;
+    ColorPlan colorPlan;
+    // The current world's choice from colorPlan, or null.
+    const ColorChoice* colorChoice = nullptr;
     Frame frame;
     std::map<std::string, M44f> namedSpaces;  // current base space from the named space
     std::map<std::string, int> lightHandles;

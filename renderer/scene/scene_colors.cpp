@@ -31,7 +31,7 @@ bool SceneColorsFromNumbers(const Options& options, const std::vector<float>& va
 
 namespace {
 
-// Under "bands", the light-weighted band means (Options::colorFromSamples); else the samples.
+// Under "bands" and "svd", the components of Options::colorFromSamples; else the samples.
 std::vector<float> ComponentsOfSamples(const Options& options, std::vector<float> samples) {
     if (options.colorFromSamples.empty()) return samples;
     const size_t n = samples.size(), k = options.colorFromSamples.size() / n;
@@ -59,7 +59,7 @@ bool SceneColorFromSpectrum(const Options& options, const std::string& nameOrFil
     if (options.wavelengths.empty()) {
         *error = "a spectrum (\"" + nameOrFile +
                  "\") needs Option \"spectral\" \"basis\" "
-                 "\"sampled\" (or \"bands\") before WorldBegin";
+                 "\"sampled\" (or \"bands\" or \"svd\") before WorldBegin";
         return false;
     }
     try {

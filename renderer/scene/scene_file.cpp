@@ -15,11 +15,11 @@ FileLoc EndOf(const std::string& sceneName) {
 
 void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics& diagnostics,
                 const SceneBuilder::FrameHandler& onFrame) {
-    BandPlan plan;
+    ColorPlan plan;
     SceneBuilder builder(sceneName, diagnostics, [&](const Frame& frame) {
-        if (frame.options.bands == 0) return onFrame(frame);
+        if (!frame.options.FitsColorSpaceToFrame()) return onFrame(frame);
         try {
-            plan[frame.ordinal] = ChooseBands(frame);
+            plan[frame.ordinal] = ChooseColorSpace(frame);
         } catch (const spectral::SpectralError& e) {
             diagnostics.Error(EndOf(sceneName), "frame " + std::to_string(frame.number) +
                                                     " is not rendered: " + e.what());
@@ -29,12 +29,12 @@ void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics
     builder.Finish(EndOf(sceneName));
     if (plan.empty()) return;
     Diagnostics silent(nullptr);
-    SceneBuilder banded(sceneName, silent, [&](const Frame& frame) {
+    SceneBuilder fitted(sceneName, silent, [&](const Frame& frame) {
         if (plan.count(frame.ordinal)) onFrame(frame);
     });
-    banded.SetBandPlan(plan);
-    read(banded, silent);
-    banded.Finish(EndOf(sceneName));
+    fitted.SetColorPlan(plan);
+    read(fitted, silent);
+    fitted.Finish(EndOf(sceneName));
 }
 
 }  // namespace gonio

@@ -1,7 +1,7 @@
 #pragma once
 // The spectra a sampled frame shows: the colours of its lights and of its surfaces, on its
-// wavelengths. They choose the frame's bands (band_plan.h) and are what `gonio spectral
-// analyze` measures the representations on.
+// wavelengths. They choose the frame's bands or svd basis (color_plan.h) and are what `gonio
+// spectral analyze` measures the representations on.
 
 #include <string>
 #include <vector>

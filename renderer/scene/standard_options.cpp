@@ -65,6 +65,7 @@ constexpr StandardParam kStandardParams[] = {
     {"Option", "spectral", "range", "uniform float[2]"},
     {"Option", "spectral", "step", "uniform float"},
     {"Option", "spectral", "bands", "uniform integer"},
+    {"Option", "spectral", "vectors", "uniform integer"},
     {"Attribute", "spectral", "color", "uniform string"},
     {"Attribute", "spectral", "opacity", "uniform string"},
     // Display driver parameters (image_writer.h); the request has no name of its own.

@@ -62,6 +62,16 @@ TEST_F(Patches, SixSvdVectorsExactDirect) {
         EXPECT_LE(Report(l, RepresentationKind::SvdExactDirect, 6).oneBounce.mean, 0.3);
 }
 
+// What the renderer's svd basis does (render_color_space.h): direct light as the exact-direct
+// form (and exactly once the 14 surfaces and white are spanned); a second bounce multiplies
+// coordinates component by component, reported, not required to be good.
+TEST_F(Patches, SvdAsRenderedIsExactForDirectLight) {
+    for (size_t l = 0; l < scenes_.size(); ++l) {
+        EXPECT_LE(Report(l, RepresentationKind::SvdRendered, 6).oneBounce.mean, 0.3);
+        EXPECT_LE(Report(l, RepresentationKind::SvdRendered, 15).oneBounce.max, 1e-6);
+    }
+}
+
 TEST_F(Patches, ThesisEq69IsReportedNotAsserted) {
     // Design note: multiplying SVD coefficients component by component is not a reflection for
     // overlapping basis vectors; measured, not required to be good.

@@ -68,7 +68,7 @@ TEST(RenderColorSpace, ALightKeepsItsChromaticity) {
 }
 
 // Bands: the components and the display of a sampled spectrum (k rows of n, then k rows of 3).
-std::vector<double> BandComponents(const RenderColorSpace& bands, const Eigen::VectorXd& s) {
+std::vector<double> Components(const RenderColorSpace& bands, const Eigen::VectorXd& s) {
     const size_t n = size_t(s.size()), k = bands.fromSamples.size() / n;
     std::vector<double> c(k, 0.0);
     for (size_t b = 0; b < k; ++b)
@@ -76,7 +76,7 @@ std::vector<double> BandComponents(const RenderColorSpace& bands, const Eigen::V
     return c;
 }
 
-Rgb BandRgb(const RenderColorSpace& bands, const std::vector<double>& c) {
+Rgb ComponentsRgb(const RenderColorSpace& bands, const std::vector<double>& c) {
     Rgb rgb = Rgb::Zero();
     for (size_t b = 0; b < c.size(); ++b)
         for (int ch = 0; ch < 3; ++ch) rgb[ch] += c[b] * bands.toRgb[3 * b + ch];
@@ -98,7 +98,7 @@ TEST(BandColorSpace, TheLightItselfDisplaysExactly) {
     EXPECT_EQ(bands.toRgb.size(), 3u * 11);
     EXPECT_EQ(bands.fromRgb.size(), 3u * 11);
     const std::vector<double> samples(f11.data(), f11.data() + f11.size());
-    const Rgb want = ToRgb(samples), got = BandRgb(bands, BandComponents(bands, f11));
+    const Rgb want = ToRgb(samples), got = ComponentsRgb(bands, Components(bands, f11));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4 * want.maxCoeff()) << c;
 }
 
@@ -110,12 +110,12 @@ TEST(BandColorSpace, ABandwiseConstantReflectanceUnderTheLightIsExact) {
     Eigen::VectorXd r(81);
     for (size_t b = 0; b + 1 < kEdges.size(); ++b)
         r.segment(kEdges[b], kEdges[b + 1] - kEdges[b]).setConstant(0.1 + 0.08 * double(b));
-    const std::vector<double> cl = BandComponents(bands, f11), cr = BandComponents(bands, r);
+    const std::vector<double> cl = Components(bands, f11), cr = Components(bands, r);
     std::vector<double> product(cl.size());
     for (size_t b = 0; b < cl.size(); ++b) product[b] = cl[b] * cr[b];
     const Eigen::VectorXd exact = f11.cwiseProduct(r);
     const Rgb want = ToRgb(std::vector<double>(exact.data(), exact.data() + 81));
-    const Rgb got = BandRgb(bands, product);
+    const Rgb got = ComponentsRgb(bands, product);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4 * want.maxCoeff()) << c;
 }
 
@@ -124,7 +124,7 @@ TEST(BandColorSpace, ABandwiseConstantReflectanceUnderTheLightIsExact) {
 TEST(BandColorSpace, UnderAConstantLightGreyStaysGrey) {
     const RenderColorSpace bands =
         BandColorSpace(ReferenceGrid(), kEdges, Eigen::VectorXd::Constant(81, 2.0));
-    const Rgb grey = BandRgb(bands, BandComponents(bands, Eigen::VectorXd::Constant(81, 0.7)));
+    const Rgb grey = ComponentsRgb(bands, Components(bands, Eigen::VectorXd::Constant(81, 0.7)));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(grey[c], 0.7, 1e-5);
     for (size_t b = 0; b < 11; ++b)
         EXPECT_NEAR(bands.fromRgb[b] + bands.fromRgb[11 + b] + bands.fromRgb[22 + b], 1.0, 1e-5);
@@ -136,6 +136,71 @@ TEST(BandColorSpace, RejectsEdgesThatDoNotPartitionTheSamples) {
     EXPECT_THROW(BandColorSpace(ReferenceGrid(), {0, 40, 80}, e), SpectralError);
     EXPECT_THROW(BandColorSpace(ReferenceGrid(), {0, 81}, Eigen::VectorXd::Ones(80)),
                  SpectralError);
+}
+
+std::vector<Eigen::VectorXd> TestColours(int count) {
+    std::vector<Eigen::VectorXd> surfaces;
+    for (int j = 1; j <= count; ++j) {
+        const std::string name = std::string(j < 10 ? "TCS0" : "TCS") + std::to_string(j);
+        surfaces.push_back(Sampled(name.c_str()));
+    }
+    return surfaces;
+}
+
+// The basis is turned so that white under the light has every coordinate 1.
+TEST(LightSvdBasis, WhiteUnderTheLightHasCoordinatesOne) {
+    const Eigen::VectorXd f11 = Sampled("F11");
+    for (int k : {1, 3, 6, 20}) {
+        const Eigen::MatrixXd basis = LightSvdBasis(f11, TestColours(8), k);
+        ASSERT_EQ(basis.cols(), k);
+        // B·1 is the light's projection onto the span: what is left is orthogonal to it, and
+        // nothing once the span holds every product (8 surfaces and white: 9 vectors).
+        const Eigen::VectorXd rest = f11 - basis * Eigen::VectorXd::Ones(k);
+        EXPECT_LT((basis.transpose() * rest).norm(), 1e-9 * f11.norm() * basis.norm()) << k;
+        if (k >= 9) EXPECT_LT(rest.norm(), 1e-9 * f11.norm()) << k;
+        // A scaled rotation of orthonormal vectors: its columns stay orthogonal and equally long.
+        const Eigen::MatrixXd gram = basis.transpose() * basis;
+        EXPECT_LT((gram - gram(0, 0) * Eigen::MatrixXd::Identity(k, k)).norm(), 1e-9 * gram(0, 0));
+    }
+    EXPECT_THROW(LightSvdBasis(f11, TestColours(2), 0), SpectralError);
+    EXPECT_THROW(LightSvdBasis(f11, TestColours(2), 82), SpectralError);
+}
+
+// Thesis §6.1.3 done exactly for direct light: each light spectrum its own block, a light its
+// block's components 1, a reflectance the coordinates of its product with each block's light.
+// The component-wise product then displays as the spectral product, light by light, and a
+// white surface as the light.
+TEST(SvdColorSpace, LightTimesReflectanceIsTheProjectedProduct) {
+    const std::vector<Eigen::VectorXd> surfaces = TestColours(8);
+    const Eigen::VectorXd f11 = Sampled("F11"), a = Sampled("A");
+    // 9 vectors hold the 8 products and the light: exact; 4 only project them.
+    for (int k : {9, 4}) {
+        const RenderColorSpace space = SvdColorSpace(
+            ReferenceGrid(),
+            {{f11, LightSvdBasis(f11, surfaces, k)}, {a, LightSvdBasis(a, surfaces, k)}});
+        ASSERT_EQ(space.toRgb.size(), size_t(3 * 2 * k));
+        ASSERT_EQ(space.fromRgb.size(), size_t(3 * 2 * k));
+        const std::vector<double> white = Components(space, Eigen::VectorXd::Ones(81));
+        for (double c : white) EXPECT_NEAR(c, 1.0, 1e-6);
+        for (int light = 0; light < 2; ++light) {
+            std::vector<double> mask(size_t(2 * k), 0.0);
+            for (int c = 0; c < k; ++c) mask[size_t(light * k + c)] = 1.0;
+            const Eigen::VectorXd& l = light == 0 ? f11 : a;
+            double worst = 0;
+            for (const Eigen::VectorXd& r : surfaces) {
+                std::vector<double> product = Components(space, r);
+                for (size_t c = 0; c < product.size(); ++c) product[c] *= mask[c];
+                const Eigen::VectorXd exact = l.cwiseProduct(r);
+                const Rgb want = ToRgb(std::vector<double>(exact.data(), exact.data() + 81));
+                worst =
+                    std::max(worst, (ComponentsRgb(space, product) - want).norm() / want.norm());
+            }
+            if (k == 9)
+                EXPECT_LT(worst, 1e-5) << light;
+            else
+                EXPECT_GT(worst, 1e-3) << light << ": 4 vectors should not hold 9 spectra";
+        }
+    }
 }
 
 }  // namespace

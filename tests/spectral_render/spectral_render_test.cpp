@@ -59,6 +59,7 @@ Rendered Render(const std::string& options, const std::string& surface, const st
 
 const char* const kSampled = "Option \"spectral\" \"basis\" \"sampled\"";
 const char* const kBands = "Option \"spectral\" \"basis\" \"bands\" \"bands\" 16";
+const char* const kSvd = "Option \"spectral\" \"basis\" \"svd\" \"vectors\" 6";
 const char* const kLightAlongView =
     "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0]";
 
@@ -68,9 +69,9 @@ Xyz SceneXyz(const Rgb& rgb, const spectral::SampledObserver& observer) {
     return spectral::BradfordAdapt(spectral::LinearSrgbToXyz(rgb), spectral::SrgbWhite(), white);
 }
 
-// A white card under a white light is the same picture in RGB, in 81 samples and in 16 bands,
-// whether the light's colour is left at its default, given as RGB (uplifted) or as the spectrum
-// E.
+// A white card under a white light is the same picture in RGB, in 81 samples, in 16 bands and
+// in 6 svd vectors, whether the light's colour is left at its default, given as RGB (uplifted) or
+// as the spectrum E.
 TEST(SpectralRender, NeutralSceneRendersAsInRgb) {
     const Rendered rgb = Render("", "", kLightAlongView);
     ASSERT_EQ(rgb.errors, 0) << rgb.messages;
@@ -80,7 +81,7 @@ TEST(SpectralRender, NeutralSceneRendersAsInRgb) {
                               "\"lightcolor\" [1 1 1]",
                               "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0] "
                               "\"lightcolor\" [\"E\"]"}) {
-        for (const char* basis : {kSampled, kBands}) {
+        for (const char* basis : {kSampled, kBands, kSvd}) {
             const Rendered spectral = Render(basis, "Color [1 1 1]", light);
             ASSERT_EQ(spectral.errors, 0) << spectral.messages;
             for (int c = 0; c < 3; ++c)
@@ -89,26 +90,66 @@ TEST(SpectralRender, NeutralSceneRendersAsInRgb) {
     }
 }
 
-// TCS09 (a strong red) under F11 (a three-band fluorescent lamp): the pixel is the product
-// spectrum's colour, whose chromaticity and luminance the colour tables give independently.
-TEST(SpectralRender, ASurfaceSpectrumUnderALightSpectrumHasTheProductsColour) {
-    const Rendered r = Render(kSampled, "Attribute \"spectral\" \"color\" [\"TCS09\"]",
-                              std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]");
-    ASSERT_EQ(r.errors, 0) << r.messages;
-    const spectral::SampledObserver observer =
-        spectral::SampleObserver(spectral::NamedObserver("CIE1931"), spectral::ReferenceGrid());
-    const Eigen::VectorXd light =
-        spectral::SampleSpectrum(spectral::NamedSpectrum("F11"), spectral::ReferenceGrid());
+// The colour a render's centre pixel should have: Σ intensity · light ∘ TCS09, by the colour
+// tables.
+Xyz ProductXyz(const std::vector<std::pair<double, const char*>>& lights,
+               const spectral::SampledObserver& observer) {
     const Eigen::VectorXd surface =
         spectral::SampleSpectrum(spectral::NamedSpectrum("TCS09"), spectral::ReferenceGrid());
-    const Xyz want =
-        spectral::Tristimulus(light.cwiseProduct(surface), observer) / observer.cmf.row(1).sum();
+    Eigen::VectorXd reflected = Eigen::VectorXd::Zero(surface.size());
+    for (const auto& [intensity, name] : lights)
+        reflected += intensity * spectral::SampleSpectrum(spectral::NamedSpectrum(name),
+                                                          spectral::ReferenceGrid())
+                                     .cwiseProduct(surface);
+    return spectral::Tristimulus(reflected, observer) / observer.cmf.row(1).sum();
+}
+
+void ExpectColour(const Rendered& r, const Xyz& want, const spectral::SampledObserver& observer,
+                  const std::string& label) {
+    ASSERT_EQ(r.errors, 0) << r.messages;
     const Xyz got = SceneXyz(r.pixel, observer);
     // The float pipeline and the space's white correction (at most 1e-4 a channel) bound these.
-    EXPECT_NEAR(got.y(), want.y(), 2e-4 * want.y() + 1e-6);
+    EXPECT_NEAR(got.y(), want.y(), 2e-4 * want.y() + 1e-6) << label;
     const Eigen::Vector2d xy = spectral::Chromaticity(got), wantXy = spectral::Chromaticity(want);
-    EXPECT_NEAR(xy.x(), wantXy.x(), 3e-4);
-    EXPECT_NEAR(xy.y(), wantXy.y(), 3e-4);
+    EXPECT_NEAR(xy.x(), wantXy.x(), 3e-4) << label;
+    EXPECT_NEAR(xy.y(), wantXy.y(), 3e-4) << label;
+}
+
+// TCS09 (a strong red) under F11 (a three-band fluorescent lamp): the pixel is the product
+// spectrum's colour, whose chromaticity and luminance the colour tables give independently.
+// So it is in the svd basis: the card is the frame's one surface, and 2 vectors (its l∘r and
+// the light's own spectrum) hold it exactly.
+TEST(SpectralRender, ASurfaceSpectrumUnderALightSpectrumHasTheProductsColour) {
+    const spectral::SampledObserver observer =
+        spectral::SampleObserver(spectral::NamedObserver("CIE1931"), spectral::ReferenceGrid());
+    const Xyz want = ProductXyz({{1.0, "F11"}}, observer);
+    for (const char* basis : {kSampled, "Option \"spectral\" \"basis\" \"svd\" \"vectors\" 2"})
+        ExpectColour(Render(basis, "Attribute \"spectral\" \"color\" [\"TCS09\"]",
+                            std::string(kLightAlongView) + " \"lightcolor\" [\"F11\"]"),
+                     want, observer, basis);
+}
+
+// Lights of different spectra each get their own svd block (thesis §6.1.3's per-light images,
+// added at display); two lights of one spectrum at different strengths share one.
+TEST(SpectralRender, SvdAddsTheImagesOfEachLightSpectrum) {
+    const spectral::SampledObserver observer =
+        spectral::SampleObserver(spectral::NamedObserver("CIE1931"), spectral::ReferenceGrid());
+    const std::string lights =
+        "LightSource \"distantlight\" 1 \"from\" [0 0 -1] \"to\" [0 0 0] \"intensity\" 0.5 "
+        "\"lightcolor\" [\"F11\"]\n"
+        "LightSource \"distantlight\" 2 \"from\" [0 0 -1] \"to\" [0 0 0] \"intensity\" 0.25 "
+        "\"lightcolor\" [\"A\"]\n"
+        "LightSource \"distantlight\" 3 \"from\" [0 0 -1] \"to\" [0 0 0] \"intensity\" 0.5 "
+        "\"lightcolor\" [\"A\"]\n"
+        "LightSource \"distantlight\" 4 \"from\" [0 0 -1] \"to\" [0 0 0] \"intensity\" 0.1";
+    const Xyz want = ProductXyz({{0.5, "F11"}, {0.75, "A"}, {0.1, "E"}}, observer);
+    for (const char* basis : {kSampled, "Option \"spectral\" \"basis\" \"svd\" \"vectors\" 2"})
+        ExpectColour(Render(basis, "Attribute \"spectral\" \"color\" [\"TCS09\"]", lights), want,
+                     observer, basis);
+    // One vector cannot hold both the light and its reflection: the test can fail.
+    const Rendered one = Render("Option \"spectral\" \"basis\" \"svd\" \"vectors\" 1",
+                                "Attribute \"spectral\" \"color\" [\"TCS09\"]", lights);
+    EXPECT_GT((SceneXyz(one.pixel, observer) - want).norm(), 0.01 * want.norm());
 }
 
 // What the RGB renderer gets wrong: the same scene with both spectra reduced to RGB first.
