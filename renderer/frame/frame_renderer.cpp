@@ -9,7 +9,6 @@
 #include <cmath>
 #include <filesystem>
 #include <numeric>
-#include <unordered_map>
 
 #include "base/progress.h"
 #include "base/random.h"
@@ -20,6 +19,7 @@
 #include "renderer/pathtrace/path_integrator.h"
 #include "renderer/raytrace/camera.h"
 #include "renderer/raytrace/ray_scene.h"
+#include "renderer/raytrace/transparent_layers.h"
 #include "renderer/shading/imager_shading.h"
 #include "renderer/shading/surface_shading.h"
 
@@ -27,7 +27,6 @@ namespace gonio {
 namespace {
 
 constexpr int kTileSize = 16;
-constexpr int kMaxLayers = 64;  // transparent surfaces a camera ray may pass through
 
 int OutputFloats(const std::vector<ShaderOutput>& outputs) {
     int total = 0;
@@ -47,7 +46,6 @@ struct SampleState {
     // Coverage by visible surfaces; matte objects hide what is behind them but add none.
     float alpha = 0;
     float depth = std::numeric_limits<float>::infinity();
-    bool alive = true;
     // Seeds the random() streams of the points this sample hits: a hash of the render's seed,
     // the pixel and the sample, mixed on at each layer.
     uint64_t randomSeed = 0;
@@ -139,26 +137,13 @@ class TileRenderer {
     void ChooseShadedPoints(const Attributes& attributes, const std::vector<int>& members);
 
     std::vector<SampleState> samples_;
-    // Reused from layer to layer so that their colour storage is allocated once.
-    std::vector<SurfacePoint> points_;
-    std::vector<int> hitSamples_;
-    std::vector<float> hitT_, hitTnear_;
-    // ShadeLayer's batches: the hits of each Attributes, in order of first appearance.
-    struct Group {
-        const Attributes* attributes;
-        std::vector<int> members;
-    };
-    std::vector<Group> groups_;
-    std::unordered_map<const Attributes*, size_t> groupIndex_;
+    TransparentLayers layers_;  // a layer's hits, by sample: HitAt(k).ray
     ShadingBatch batch_;
     std::vector<float> Ci_, Oi_, outputValues_, filmValues_;
     std::vector<ShadingPointHit> sharingHits_;
     std::vector<int> shaded_, shadedBy_;
-    // The next visible (not back-face culled) hit of a sample, or false.
-    bool NextHit(SampleState& sample, SurfacePoint* sp, float* t);
-    void ShadeLayer();
-    // Sorts the layer's hits into groups_ by their attributes; returns how many groups.
-    size_t GroupHits();
+    // Shades one group of a layer's hits and composites them into their samples.
+    void ShadeGroup(const TransparentLayers::Group& group);
     // The rays one pixel to the right and one down from a sample's, through the same point of
     // the lens at the same time: the ray differentials of shaders that take derivatives.
     NeighbourRays MakeNeighbourRays(const SampleState& sample, float tnear) const;
@@ -204,8 +189,9 @@ void TileRenderer::ChooseShadedPoints(const Attributes& attributes,
     sharingHits_.resize(size_t(n));
     for (int j = 0; j < n; ++j) {
         const int k = members[j];
-        const SampleState& sample = samples_[hitSamples_[k]];
-        sharingHits_[j] = {sample.x, sample.y, hitT_[k], sample.ray.dir, &points_[k]};
+        const TransparentLayers::Hit& hit = layers_.HitAt(k);
+        const SampleState& sample = samples_[size_t(hit.ray)];
+        sharingHits_[j] = {sample.x, sample.y, hit.t, sample.ray.dir, &layers_.PointAt(k)};
     }
     sharing_.Cluster(sharingHits_, attributes.shadingRate, &shaded_, &shadedBy_);
 }
@@ -231,20 +217,6 @@ void TileRenderer::OpacityToRgb(const float* opacity, float* rgb) const {
     rgb[0] = rgb[1] = rgb[2] = mean;
 }
 
-bool TileRenderer::NextHit(SampleState& sample, SurfacePoint* sp, float* t) {
-    const CameraRay& ray = sample.ray;
-    while (true) {
-        RayHit hit;
-        ++cameraRays_;
-        if (!scene_.Intersect(ray.org, ray.dir, sample.ray.tnear, ray.tfar, ray.time, &hit))
-            return false;
-        sample.ray.tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
-        scene_.Evaluate(ray.org, ray.dir, hit, sp);
-        *t = hit.t;
-        if (sp->attributes->twoSided || sp->Ng.dot(ray.dir) <= 0) return true;
-    }
-}
-
 void TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& generator,
                           FilmTile* film) {
     samples_.clear();
@@ -257,28 +229,19 @@ void TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& gen
 }
 
 void TileRenderer::TraceAndShade() {
-    if (points_.size() < samples_.size()) points_.resize(samples_.size());
-    for (int layer = 0; layer < kMaxLayers; ++layer) {
-        hitSamples_.clear();
-        hitT_.clear();
-        hitTnear_.clear();
-        for (int i = 0; i < int(samples_.size()); ++i) {
-            SampleState& sample = samples_[i];
-            if (!sample.alive) continue;
-            const float tnear = sample.ray.tnear;
-            float t;
-            if (!NextHit(sample, &points_[hitSamples_.size()], &t)) {
-                sample.alive = false;
-                continue;
-            }
-            if (std::isinf(sample.depth)) sample.depth = t;
-            hitSamples_.push_back(i);
-            hitT_.push_back(t);
-            hitTnear_.push_back(tnear);
-        }
-        if (hitSamples_.empty()) break;
-        ShadeLayer();
-    }
+    layers_.Trace(
+        int(samples_.size()),
+        [&](int i, SurfacePoint* sp, TransparentLayers::Hit* hit) {
+            SampleState& sample = samples_[size_t(i)];
+            CameraRay& ray = sample.ray;
+            hit->tnear = ray.tnear;
+            if (!NextVisibleHit(scene_, ray.org, ray.dir, ray.time, ray.tfar, &ray.tnear, sp,
+                                &hit->t, &cameraRays_))
+                return false;
+            if (std::isinf(sample.depth)) sample.depth = hit->t;
+            return true;
+        },
+        [&](int, const TransparentLayers::Group& group) { ShadeGroup(group); });
 }
 
 void TileRenderer::TracePaths() {
@@ -319,82 +282,59 @@ NeighbourRays TileRenderer::MakeNeighbourRays(const SampleState& sample, float t
     return rays;
 }
 
-size_t TileRenderer::GroupHits() {
-    // A fixed order (first appearance), so that results do not depend on threads.
-    groupIndex_.clear();
-    size_t used = 0;
-    for (int k = 0; k < int(hitSamples_.size()); ++k) {
-        const Attributes* attributes = points_[k].attributes;
-        auto [it, isNew] = groupIndex_.try_emplace(attributes, used);
-        if (isNew) {
-            if (used == groups_.size()) groups_.emplace_back();
-            groups_[used].attributes = attributes;
-            groups_[used].members.clear();
-            ++used;
-        }
-        groups_[it->second].members.push_back(k);
+void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
+    const Attributes* attributes = group.attributes;
+    const std::vector<int>& members = group.members;
+    ShadingBatch& batch = batch_;
+    batch.attributes = attributes;
+    batch.points.clear();
+    batch.incident.clear();
+    batch.depth.clear();
+    batch.neighbourRays.clear();
+    batch.randomSeeds.clear();
+    const bool neighbours = !attributes->matte && shading_.WantsNeighbourRays(attributes);
+    ChooseShadedPoints(*attributes, members);
+    for (int shadedMember : shaded_) {
+        const int k = members[size_t(shadedMember)];
+        const TransparentLayers::Hit& hit = layers_.HitAt(k);
+        const SampleState& sample = samples_[size_t(hit.ray)];
+        batch.points.push_back(&layers_.PointAt(k));
+        batch.incident.push_back(sample.ray.dir * hit.t);
+        batch.depth.push_back(hit.t);
+        if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hit.tnear));
+        batch.randomSeeds.push_back(sample.randomSeed);
     }
-    return used;
-}
-
-void TileRenderer::ShadeLayer() {
-    const size_t groups = GroupHits();
-    for (size_t g = 0; g < groups; ++g) {
-        const Attributes* attributes = groups_[g].attributes;
-        const std::vector<int>& batchMembers = groups_[g].members;
-        ShadingBatch& batch = batch_;
-        batch.attributes = attributes;
-        batch.points.clear();
-        batch.incident.clear();
-        batch.depth.clear();
-        batch.neighbourRays.clear();
-        batch.randomSeeds.clear();
-        const bool neighbours = !attributes->matte && shading_.WantsNeighbourRays(attributes);
-        ChooseShadedPoints(*attributes, batchMembers);
-        for (int shadedMember : shaded_) {
-            const int k = batchMembers[shadedMember];
-            const SampleState& sample = samples_[hitSamples_[k]];
-            batch.points.push_back(&points_[k]);
-            batch.incident.push_back(sample.ray.dir * hitT_[k]);
-            batch.depth.push_back(hitT_[k]);
-            if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hitTnear_[k]));
-            batch.randomSeeds.push_back(sample.randomSeed);
-        }
-        Ci_.assign(shaded_.size() * ncomps_, 0.f);
-        Oi_.assign(shaded_.size() * ncomps_, 0.f);
-        if (outputFloats_ > 0) {
-            outputValues_.assign(shaded_.size() * outputFloats_, 0.f);
-            batch.outputs = &outputs_;
-            batch.outputValues = outputValues_.data();
-        }
-        if (!attributes->matte) shading_.Shade(batch, Ci_.data(), Oi_.data());
-        for (size_t j = 0; j < batchMembers.size(); ++j) {
-            SampleState& sample = samples_[hitSamples_[batchMembers[j]]];
-            sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
-            const size_t r = size_t(shadedBy_[j]);           // the shaded point this sample shows
-            // A matte object hides what lies behind it and adds nothing itself (RISpec
-            // §4.2.5): its opacity is the surface's Os, not a shader's output.
-            const float* opacities =
-                attributes->matte ? points_[batchMembers[j]].Os.data() : &Oi_[r * ncomps_];
-            float rgb[3], opacityRgb[3];
-            ToRgb(&Ci_[r * ncomps_], rgb);
-            OpacityToRgb(opacities, opacityRgb);
-            float remaining = 0, covered = 0;
-            for (int c = 0; c < 3; ++c) {
-                const float opacity = std::clamp(opacityRgb[c], 0.f, 1.f);
-                if (!attributes->matte) sample.colour[c] += sample.transmittance[c] * rgb[c];
-                covered += sample.transmittance[c] * opacity / 3;
-                sample.transmittance[c] *= 1 - opacity;
-                remaining = std::max(remaining, sample.transmittance[c]);
-            }
-            if (remaining < 1e-4f) sample.alive = false;
-            if (attributes->matte) continue;
-            sample.alpha += covered;
-            // AOVs are not premultiplied: each layer adds its value weighted by the coverage
-            // it adds, so an opaque surface's AOV is its value.
-            for (int k = 0; k < outputFloats_; ++k)
-                sample.outputs[k] += covered * outputValues_[r * outputFloats_ + k];
-        }
+    Ci_.assign(shaded_.size() * ncomps_, 0.f);
+    Oi_.assign(shaded_.size() * ncomps_, 0.f);
+    if (outputFloats_ > 0) {
+        outputValues_.assign(shaded_.size() * outputFloats_, 0.f);
+        batch.outputs = &outputs_;
+        batch.outputValues = outputValues_.data();
+    }
+    if (!attributes->matte) shading_.Shade(batch, Ci_.data(), Oi_.data());
+    for (size_t j = 0; j < members.size(); ++j) {
+        const int ray = layers_.HitAt(members[j]).ray;
+        SampleState& sample = samples_[size_t(ray)];
+        sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
+        const size_t r = size_t(shadedBy_[j]);           // the shaded point this sample shows
+        // A matte object's opacity is the surface's Os, not a shader's output.
+        const float* opacities =
+            attributes->matte ? layers_.PointAt(members[j]).Os.data() : &Oi_[r * ncomps_];
+        float rgb[3], opacityRgb[3];
+        ToRgb(&Ci_[r * ncomps_], rgb);
+        OpacityToRgb(opacities, opacityRgb);
+        float covered = 0;
+        for (int c = 0; c < 3; ++c)
+            covered += sample.transmittance[c] * std::clamp(opacityRgb[c], 0.f, 1.f) / 3;
+        if (CompositeLayer(3, rgb, opacityRgb, attributes->matte, sample.colour,
+                           sample.transmittance) < kNegligibleTransmittance)
+            layers_.Stop(ray);
+        if (attributes->matte) continue;
+        sample.alpha += covered;
+        // AOVs are not premultiplied: each layer adds its value weighted by the coverage it
+        // adds, so an opaque surface's AOV is its value.
+        for (int k = 0; k < outputFloats_; ++k)
+            sample.outputs[k] += covered * outputValues_[r * outputFloats_ + k];
     }
 }
 

@@ -7,6 +7,7 @@
 #include "base/hash.h"
 #include "base/math.h"
 #include "renderer/raytrace/transforms.h"
+#include "renderer/raytrace/transparent_layers.h"
 
 namespace gonio {
 namespace {
@@ -84,7 +85,7 @@ bool PathWorker::NextHit(const Imath::V3f& org, const Imath::V3f& dir, float tne
         if (!c_.scene_.Intersect(org, dir, tnear, tfar, time, hit)) return false;
         c_.scene_.Evaluate(org, dir, *hit, &sp_);
         if (sp_.attributes->twoSided || sp_.Ng.dot(dir) <= 0) return true;
-        tnear = hit->t + std::max(1e-5f, 1e-5f * hit->t);
+        tnear = ContinuePast(hit->t);
     }
 }
 

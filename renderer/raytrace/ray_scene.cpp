@@ -81,7 +81,8 @@ void QuadricIntersect(const RTCIntersectFunctionNArguments* args) {
         V3f p;
         if (!IntersectQuadricRay(q, rays, N, i, &t, &p)) continue;
         RTCRayN_tfar(rays, N, i) = t;
-        // The hit point in object space rides in Ng (see RayHit::Ng); (u, v) are not known yet.
+        // Embree's hit has no field for the object-space point, so it rides in Ng until
+        // RayScene::Intersect moves it to RayHit::objectP; (u, v) are not known yet.
         RTCHitN_u(hits, N, i) = 0;
         RTCHitN_v(hits, N, i) = 0;
         RTCHitN_Ng_x(hits, N, i) = p.x;
@@ -212,6 +213,8 @@ struct RayScene::Impl {
         const InstancePlacement* placement;
     };
     ResolvedHit Resolve(const RayHit& hit) const;
+    // The hit geometry's record alone (Resolve without the attributes).
+    const GeometryRecord& RecordOf(const RayHit& hit) const;
     // The transforms between the world and the space the hit's geometry was built in (the
     // world itself at the top level, an object definition's space in an instance).
     static void SpaceTransforms(const InstancePlacement* placement, float time,
@@ -559,7 +562,10 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
     hit->instID = rh.hit.instID[0];
     hit->u = rh.hit.u;
     hit->v = rh.hit.v;
-    hit->Ng = V3f(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const V3f ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const bool quadric = impl_->RecordOf(*hit).quadric != nullptr;
+    hit->Ng = quadric ? V3f(0) : ng;
+    hit->objectP = quadric ? ng : V3f(0);  // QuadricIntersect's point
     return true;
 }
 
@@ -585,7 +591,7 @@ ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const Ray
             [&](const QuadricShape& quadric) {
                 const PrimVar* normals =
                     record.quadricN >= 0 ? &record.vars->vars[record.quadricN] : nullptr;
-                return EvaluateQuadricAt(quadric, hit.Ng, normals);  // Ng: the object-space P
+                return EvaluateQuadricAt(quadric, hit.objectP, normals);
             },
             [&](const CurveSet& curves) {
                 const V3f objectDir = TransformVector(record.objectFromSpace,
@@ -643,13 +649,17 @@ bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& nam
     return false;
 }
 
-RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
-    if (hit.instID == RTC_INVALID_GEOMETRY_ID) {
-        const GeometryRecord* record = top.records[hit.geomID].get();
-        return {record, record->shape->attributes.get(), nullptr};
-    }
+const GeometryRecord& RayScene::Impl::RecordOf(const RayHit& hit) const {
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID) return *top.records[hit.geomID];
     const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
-    const GeometryRecord* record = definitions[placement.level].records[hit.geomID].get();
+    return *definitions[placement.level].records[hit.geomID];
+}
+
+RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
+    const GeometryRecord* record = &RecordOf(hit);
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID)
+        return {record, record->shape->attributes.get(), nullptr};
+    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
     const Attributes* attributes = record->shape->attributes.get();
     if (const ObjectInstanceUse* use = placement.use)
         attributes = use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
@@ -674,9 +684,9 @@ void RayScene::EvaluateLean(const V3f& org, const V3f& dir, const RayHit& hit,
                             LeanSurfacePoint* out) const {
     const Impl::ResolvedHit resolved = impl_->Resolve(hit);
     const GeometryRecord& record = *resolved.record;
-    V3f objectN(0);  // a quadric's normal in its object space (Ng holds its hit point there)
+    V3f objectN(0);  // a quadric's normal in its object space
     if (record.plainQuadric)
-        objectN = std::get<QuadricShape>(record.shape->geometry).quadric->NormalAt(hit.Ng);
+        objectN = std::get<QuadricShape>(record.shape->geometry).quadric->NormalAt(hit.objectP);
     if (!record.flatMesh && objectN == V3f(0)) {
         SurfacePoint& sp = out->scratch;
         Evaluate(org, dir, hit, &sp);

@@ -19,10 +19,12 @@ struct RayHit {
     float time = 0;  // when the ray travelled (shutter time)
     unsigned geomID = 0, primID = 0, instID = 0;
     float u = 0, v = 0;
-    // As Embree reports it: not normalised, in the hit geometry's space. For a quadric, the
-    // hit point in the quadric's object space instead, from which Evaluate derives (u, v) and
-    // the normal (u, v above are then 0).
+    // The geometric normal as Embree reports it: not normalised, in the space the hit geometry
+    // was built in. Zero for a quadric, whose normal Evaluate derives from objectP.
     Imath::V3f Ng;
+    // A quadric's hit point in its object space, from which Evaluate derives (u, v) and the
+    // normal (u, v above are then 0). Zero for the other kinds.
+    Imath::V3f objectP;
 };
 
 // The little a particle tracer needs at a hit (RayScene::EvaluateLean): the point, the normals

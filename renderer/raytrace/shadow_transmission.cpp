@@ -6,13 +6,10 @@
 #include <variant>
 
 #include "renderer/raytrace/surface_point.h"
+#include "renderer/raytrace/transparent_layers.h"
 
 namespace gonio {
 namespace {
-
-// A shadow ray crosses at most this many partly transparent surfaces before it counts as
-// blocked: beyond that the light left is (1 − Os)^64, nothing for any Os worth the name.
-constexpr int kMaxCrossings = 64;
 
 bool HasOsPrimVar(const ShapeGeometry& geometry) {
     return std::visit(
@@ -66,11 +63,10 @@ bool AllShadowsOpaque(const Frame& frame) {
 int ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir,
                        float tnear, float tfar, float time, int ncomps, float* out) {
     std::fill(out, out + ncomps, 1.f);
-    // Past each crossing by the same relative offset the shadow ray starts with.
-    const float step = tnear;
     SurfacePoint sp;
     float t = tnear;
-    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+    // Past kMaxTransparentLayers crossings the shadow ray counts as blocked.
+    for (int crossing = 0; crossing < kMaxTransparentLayers; ++crossing) {
         RayHit hit;
         if (!scene.Intersect(org, dir, t, tfar, time, &hit)) return crossing + 1;
         scene.Evaluate(org, dir, hit, &sp);
@@ -89,10 +85,10 @@ int ShadowTransmission(const RayScene& scene, const Imath::V3f& org, const Imath
             }
             if (!any) return crossing + 1;
         }
-        t = hit.t + step;
+        t = ContinuePast(hit.t);
     }
     std::fill(out, out + ncomps, 0.f);
-    return kMaxCrossings;
+    return kMaxTransparentLayers;
 }
 
 }  // namespace gonio

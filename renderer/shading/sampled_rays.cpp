@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "base/hash.h"
+#include "renderer/raytrace/transparent_layers.h"
 #include "renderer/shading/render_context.h"
 #include "renderer/shading/shader_needs.h"
 
@@ -22,9 +23,6 @@ V3f Plane3(const float* planes, int count, int k) {
 void SetPlane3(std::vector<float>* planes, int count, int k, const V3f& v) {
     for (int c = 0; c < 3; ++c) (*planes)[size_t(c) * count + k] = v[c];
 }
-
-// At most this many surfaces are crossed by a transmission ray (as trace()'s layers).
-constexpr int kMaxTransmissionLayers = 64;
 
 }  // namespace
 
@@ -78,7 +76,8 @@ bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& 
         if (!(tfar > tnear)) continue;
         if (rays.kind == Kind::Transmission) {
             float start = tnear, remaining = 1;
-            for (int layer = 0; layer < kMaxTransmissionLayers && remaining > 1e-4f; ++layer) {
+            for (int layer = 0;
+                 layer < kMaxTransparentLayers && remaining > kNegligibleTransmittance; ++layer) {
                 RayHit hit;
                 ++rays_.sampled;
                 if (!scene_.Intersect(org, dir, start, tfar, time, &hit)) break;
@@ -90,7 +89,7 @@ bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& 
                     T *= 1 - std::clamp(c < int(full.Os.size()) ? full.Os[c] : 1.f, 0.f, 1.f);
                     remaining = std::max(remaining, T);
                 }
-                start = hit.t + std::max(1e-5f, 1e-5f * hit.t);
+                start = ContinuePast(hit.t);
             }
             continue;
         }

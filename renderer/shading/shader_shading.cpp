@@ -11,6 +11,7 @@
 
 #include "renderer/raytrace/camera.h"
 #include "renderer/raytrace/ray_scene.h"
+#include "renderer/raytrace/transparent_layers.h"
 #include "renderer/shading/frame_shaders.h"
 #include "renderer/shading/neighbour_points.h"
 #include "renderer/shading/render_context.h"
@@ -20,8 +21,7 @@
 namespace gonio {
 namespace {
 
-constexpr int kMaxBatch = 256;       // points per interpreter run: registers stay in cache
-constexpr int kMaxTraceLayers = 16;  // transparent surfaces a traced ray may pass through
+constexpr int kMaxBatch = 256;  // points per interpreter run: registers stay in cache
 
 // Component-major planes for one batch (batch.h layout).
 struct Planes {
@@ -56,8 +56,8 @@ class DepthShader {
           ncomps_(shaders.GetFrame().options.colorComponents) {}
 
     void Shade(const ShadingBatch& batch, float* Ci, float* Oi);
-    // Where the hits of the traced rays shaded at this depth are kept (ShaderWorker::TraceRays).
-    std::vector<SurfacePoint>& HitPoints() { return hitPoints_; }
+    // The layers of the traced rays shaded at this depth (ShaderWorker::TraceRays).
+    TransparentLayers& Layers() { return layers_; }
 
   private:
     // Appends to `chunk` the neighbour points of its points (first those along x, then those
@@ -88,7 +88,8 @@ class DepthShader {
     Planes P_, N_, Ng_, I_, dPdu_, dPdv_, u_, v_, s_, t_, Cs_, Os_, du_, dv_;
     std::vector<Planes> primvars_;
     std::vector<float> scratch_;
-    std::vector<SurfacePoint> neighbourPoints_, hitPoints_;
+    std::vector<SurfacePoint> neighbourPoints_;
+    TransparentLayers layers_;
     BatchNeighbours neighbours_;
     std::vector<float> neighbourDu_, neighbourDv_;  // per main point
     std::unordered_map<const ShaderGroup*, bool> readsLightParameters_;
@@ -322,19 +323,6 @@ void DepthShader::ShadeChunk(const ShaderGroup& group, const ShadingBatch& chunk
 
 // The next hit along a traced ray past *tnear and before tfar that faces the ray (or is
 // two-sided), as camera rays find theirs; *tnear moves past it. Each ray cast adds one to *rays.
-bool NextHit(const RayScene& scene, const V3f& org, const V3f& dir, float time, float* tnear,
-             float tfar, SurfacePoint* sp, float* t, uint64_t* rays) {
-    while (true) {
-        RayHit hit;
-        ++*rays;
-        if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
-        *tnear = hit.t + std::max(1e-5f, 1e-5f * hit.t);
-        scene.Evaluate(org, dir, hit, sp);
-        *t = hit.t;
-        if (sp->attributes->twoSided || sp->Ng.dot(dir) <= 0) return true;
-    }
-}
-
 class ShaderWorker : public ShadingWorker, public RayTracer {
   public:
     ShaderWorker(const FrameShaders& shaders, const RayScene& scene, const Camera& camera,
@@ -378,77 +366,56 @@ class ShaderWorker : public ShadingWorker, public RayTracer {
 // does not depend on threads), and composited front to back through transparent surfaces.
 void ShaderWorker::TraceRays(int depth, const TracedRays& rays, float* colours) {
     DepthShader& shader = AtDepth(depth);
+    TransparentLayers& layers = shader.Layers();
     const int count = static_cast<int>(rays.org.size()), nc = ncomps_;
     const bool haveNeighbours = rays.neighbours.size() == size_t(count);
+    const bool haveTfar = rays.tfar.size() == size_t(count);
     std::fill(colours, colours + size_t(count) * nc, 0.f);
     std::vector<float> transmittance(size_t(count) * nc, 1.f), tnear = rays.tnear;
-    std::vector<uint8_t> alive(count, 1);
-    std::vector<SurfacePoint>& points = shader.HitPoints();
-    if (points.size() < size_t(count)) points.resize(count);
-    std::vector<int> hitRays;
-    std::vector<float> hitT, hitTnear, Ci, Oi;
-    for (int layer = 0; layer < kMaxTraceLayers; ++layer) {
-        hitRays.clear(), hitT.clear(), hitTnear.clear();
-        for (int r = 0; r < count; ++r) {
-            if (!alive[r]) continue;
-            const float start = tnear[r];
-            float t;
-            const float tfar = rays.tfar.size() == size_t(count)
-                                   ? rays.tfar[r]
-                                   : std::numeric_limits<float>::infinity();
-            if (!NextHit(scene_, rays.org[r], rays.dir[r], rays.time, &tnear[r], tfar,
-                         &points[hitRays.size()], &t, &rays_.trace)) {
-                alive[r] = 0;
-                continue;
-            }
-            hitRays.push_back(r), hitT.push_back(t), hitTnear.push_back(start);
-        }
-        if (hitRays.empty()) break;
-        std::vector<const Attributes*> order;
-        std::unordered_map<const Attributes*, std::vector<int>> members;
-        for (int k = 0; k < int(hitRays.size()); ++k) {
-            auto [it, isNew] = members.try_emplace(points[k].attributes);
-            if (isNew) order.push_back(points[k].attributes);
-            it->second.push_back(k);
-        }
-        for (const Attributes* attributes : order) {
-            const std::vector<int>& batchMembers = members[attributes];
+    std::vector<float> Ci, Oi;
+    layers.Trace(
+        count,
+        [&](int r, SurfacePoint* sp, TransparentLayers::Hit* hit) {
+            hit->tnear = tnear[size_t(r)];
+            const float tfar =
+                haveTfar ? rays.tfar[size_t(r)] : std::numeric_limits<float>::infinity();
+            return NextVisibleHit(scene_, rays.org[size_t(r)], rays.dir[size_t(r)], rays.time, tfar,
+                                  &tnear[size_t(r)], sp, &hit->t, &rays_.trace);
+        },
+        [&](int layer, const TransparentLayers::Group& group) {
+            const Attributes* attributes = group.attributes;
             ShadingBatch batch;
             batch.attributes = attributes;
             const bool neighbours =
                 haveNeighbours && !attributes->matte && WantsNeighbourRays(attributes);
-            for (int k : batchMembers) {
-                const int r = hitRays[k];
-                batch.points.push_back(&points[k]);
-                batch.incident.push_back(rays.dir[r] * hitT[k]);
+            for (int k : group.members) {
+                const TransparentLayers::Hit& hit = layers.HitAt(k);
+                const int r = hit.ray;
+                batch.points.push_back(&layers.PointAt(k));
+                batch.incident.push_back(rays.dir[size_t(r)] * hit.t);
                 V3f current;
-                shaders_.CurrentFromWorld().multVecMatrix(points[k].P, current);
+                shaders_.CurrentFromWorld().multVecMatrix(layers.PointAt(k).P, current);
                 batch.depth.push_back(current.z);
                 if (rays.randomSeeds.size() == size_t(count))
-                    batch.randomSeeds.push_back(MixBits(rays.randomSeeds[r] + layer));
+                    batch.randomSeeds.push_back(MixBits(rays.randomSeeds[size_t(r)] + layer));
                 if (!neighbours) continue;
-                batch.neighbourRays.push_back(rays.neighbours[r]);
-                batch.neighbourRays.back().tnear = hitTnear[k];
+                batch.neighbourRays.push_back(rays.neighbours[size_t(r)]);
+                batch.neighbourRays.back().tnear = hit.tnear;
             }
-            Ci.assign(batchMembers.size() * nc, 0.f);
-            Oi.assign(batchMembers.size() * nc, 0.f);
+            Ci.assign(group.members.size() * nc, 0.f);
+            Oi.assign(group.members.size() * nc, 0.f);
             if (!attributes->matte) shader.Shade(batch, Ci.data(), Oi.data());
-            for (size_t j = 0; j < batchMembers.size(); ++j) {
-                const int r = hitRays[batchMembers[j]];
-                // A matte object hides what lies behind it and adds nothing (RISpec §4.2.5).
+            for (size_t j = 0; j < group.members.size(); ++j) {
+                const int r = layers.HitAt(group.members[j]).ray;
+                // A matte object's opacity is the surface's Os, not a shader's output.
                 const float* opacity =
-                    attributes->matte ? points[batchMembers[j]].Os.data() : &Oi[j * nc];
-                float remaining = 0;
-                for (int c = 0; c < nc; ++c) {
-                    float& T = transmittance[size_t(r) * nc + c];
-                    if (!attributes->matte) colours[size_t(r) * nc + c] += T * Ci[j * nc + c];
-                    T *= 1 - std::clamp(opacity[c], 0.f, 1.f);
-                    remaining = std::max(remaining, T);
-                }
-                if (remaining < 1e-4f) alive[r] = 0;
+                    attributes->matte ? layers.PointAt(group.members[j]).Os.data() : &Oi[j * nc];
+                if (CompositeLayer(nc, &Ci[j * nc], opacity, attributes->matte,
+                                   &colours[size_t(r) * nc],
+                                   &transmittance[size_t(r) * nc]) < kNegligibleTransmittance)
+                    layers.Stop(r);
             }
-        }
-    }
+        });
 }
 
 class ShaderShading : public SurfaceShading {

@@ -4,6 +4,8 @@ the scenes' geometry:
 
 * a mirror plane at 45 degrees shows a constant-coloured square exactly (bit for bit in a float
   image) at the pixels where the reflected rays meet it, and black elsewhere;
+* camera rays and trace() rays both see a white plane through 20 black planes of opacity 0.1
+  as 0.9^20 (one layer policy for both; trace() used to stop after 16);
 * two facing mirrors that each add 0.1 and reflect half stop at Option "trace" "maxdepth":
   0.1 * (1 + 0.5 + ... + 0.5^maxdepth), for maxdepth 0, 1, 3 and the default 6;
 * on a plane seen by an orthographic camera, area(P) is the pixel's world-space area (also on a
@@ -123,15 +125,33 @@ def frame(name, world, options=""):
     FRAMES[name] = (options, world)
 
 
-frame("mirror", f"""Translate 0 0 5
+# A mirror z = 5 - y, at 45 degrees: it turns the camera rays (+z) to -y.
+MIRROR = """Translate 0 0 5
 AttributeBegin
   Surface "mirror"
   Polygon "P" [-3 -3 3  3 -3 3  3 3 -3  -3 3 -3]
 AttributeEnd
-AttributeBegin
+"""
+frame("mirror", MIRROR + """AttributeBegin
   Color [0.2 0.6 0.9]
   Surface "constant"
   Polygon "P" [-0.5 -3 0.25  0.5 -3 0.25  0.5 -3 1  -0.5 -3 1]
+AttributeEnd""")
+
+# Twenty black planes of opacity 0.1 in front of a white one: what is left of the white is
+# 0.9^20, for camera rays (planes across z) and for trace() rays off the mirror above (planes
+# across y, parallel to the camera rays), which cross transparent surfaces by one policy.
+LAYERS = 20
+TRANSPARENT = 'Surface "constant"\nColor [0 0 0]\nOpacity [0.1 0.1 0.1]\n'
+frame("camera_layers", "Translate 0 0 5\n" + TRANSPARENT + "".join(
+    f'Polygon "P" [-3 -3 {z}  3 -3 {z}  3 3 {z}  -3 3 {z}]\n'
+    for z in (0.05 * k for k in range(LAYERS))) +
+    'Opacity [1 1 1]\nColor [1 1 1]\nPolygon "P" [-3 -3 2  3 -3 2  3 3 2  -3 3 2]')
+frame("trace_layers", MIRROR + "AttributeBegin\n" + TRANSPARENT + "".join(
+    f'  Polygon "P" [-3 {y} -3  3 {y} -3  3 {y} 12  -3 {y} 12]\n'
+    for y in (-1.05 - 0.05 * k for k in range(LAYERS))) + """  Opacity [1 1 1]
+  Color [1 1 1]
+  Polygon "P" [-3 -3.5 -3  3 -3.5 -3  3 -3.5 12  -3 -3.5 12]
 AttributeEnd""")
 
 FACING_MIRRORS = """Surface "mirror" "uniform float Kr" 0.5 "uniform float Ke" 0.1
@@ -216,6 +236,22 @@ def facing_mirrors_stop_at_the_trace_depth(images):
             expect(near(value[0], expected, 1e-6),
                    f"{name}: pixel {x},{y} is {value[0]}, not 0.1*(1+...+0.5^{depth}) = "
                    f"{expected}")
+
+
+@check
+def camera_and_trace_rays_cross_the_same_layers(images):
+    expected = 0.9 ** LAYERS
+    seen = 0
+    for name in ("camera_layers", "trace_layers"):
+        for (x, y), value in images[name].items():
+            cx, cy = camera_xy(x, y)
+            # trace_layers: rays reflected below y = -1 miss some of the planes.
+            if name == "trace_layers" and not -0.9 <= cy <= 1.9:
+                continue
+            expect(near(value[0], expected, 1e-5),
+                   f"{name}: pixel {x},{y} is {value[0]}, not 0.9^{LAYERS} = {expected}")
+            seen += 1
+    expect(seen > 64 * 64, f"only {seen} pixels checked")
 
 
 def interior(image, margin_pixels=2, half_width=1.5):

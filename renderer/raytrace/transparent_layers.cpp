@@ -1,0 +1,48 @@
+#include "renderer/raytrace/transparent_layers.h"
+
+#include <algorithm>
+
+namespace gonio {
+
+bool NextVisibleHit(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir, float time,
+                    float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays) {
+    while (true) {
+        RayHit hit;
+        ++*rays;
+        if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
+        *tnear = ContinuePast(hit.t);
+        scene.Evaluate(org, dir, hit, sp);
+        *t = hit.t;
+        if (sp->attributes->twoSided || sp->Ng.dot(dir) <= 0) return true;
+    }
+}
+
+float CompositeLayer(int n, const float* Ci, const float* Oi, bool matte, float* colour,
+                     float* transmittance) {
+    float remaining = 0;
+    for (int c = 0; c < n; ++c) {
+        if (!matte) colour[c] += transmittance[c] * Ci[c];
+        transmittance[c] *= 1 - std::clamp(Oi[c], 0.f, 1.f);
+        remaining = std::max(remaining, transmittance[c]);
+    }
+    return remaining;
+}
+
+size_t TransparentLayers::GroupHits() {
+    groupIndex_.clear();
+    size_t used = 0;
+    for (int k = 0; k < int(hits_.size()); ++k) {
+        const Attributes* attributes = points_[size_t(k)].attributes;
+        auto [it, isNew] = groupIndex_.try_emplace(attributes, used);
+        if (isNew) {
+            if (used == groups_.size()) groups_.emplace_back();
+            groups_[used].attributes = attributes;
+            groups_[used].members.clear();
+            ++used;
+        }
+        groups_[it->second].members.push_back(k);
+    }
+    return used;
+}
+
+}  // namespace gonio
