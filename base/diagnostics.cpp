@@ -31,21 +31,13 @@ void Diagnostics::Report(Severity severity, const FileLoc& loc, const std::strin
                      message.c_str());
 }
 
-void Diagnostics::NoteOnce(const std::string& key, const FileLoc& loc, const std::string& message) {
+void Diagnostics::ReportOnce(Severity severity, const std::string& key, const FileLoc& loc,
+                             const std::string& message) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (!seenKeys_.insert(key).second) return;
     }
-    Note(loc, message);
-}
-
-void Diagnostics::WarningOnce(const std::string& key, const FileLoc& loc,
-                              const std::string& message) {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (!seenKeys_.insert(key).second) return;
-    }
-    Warning(loc, message);
+    Report(severity, loc, message);
 }
 
 }  // namespace gonio

@@ -32,8 +32,17 @@ class Diagnostics {
     }
     // Reports `message` only the first time `key` is seen, for notes such as "ShadingRate is
     // ignored by a ray tracer" that would otherwise repeat once per request.
-    void NoteOnce(const std::string& key, const FileLoc& loc, const std::string& message);
-    void WarningOnce(const std::string& key, const FileLoc& loc, const std::string& message);
+    void NoteOnce(const std::string& key, const FileLoc& loc, const std::string& message) {
+        ReportOnce(Severity::Note, key, loc, message);
+    }
+    void WarningOnce(const std::string& key, const FileLoc& loc, const std::string& message) {
+        ReportOnce(Severity::Warning, key, loc, message);
+    }
+    void ErrorOnce(const std::string& key, const FileLoc& loc, const std::string& message) {
+        ReportOnce(Severity::Error, key, loc, message);
+    }
+    void ReportOnce(Severity severity, const std::string& key, const FileLoc& loc,
+                    const std::string& message);
 
     int ErrorCount() const { return errors_; }
     int WarningCount() const { return warnings_; }

@@ -1,14 +1,18 @@
 #include "brdfsim/grd_file.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
+#include "base/diagnostics.h"
 #include "base/limits.h"
+#include "base/math.h"
 
 namespace gonio {
 
@@ -17,6 +21,8 @@ namespace {
 constexpr char kMagic[8] = {'G', 'O', 'N', 'I', 'O', 'G', 'R', 'D'};
 constexpr char kEndMagic[8] = {'G', 'R', 'D', 'E', 'N', 'D', '\0', '\0'};
 constexpr std::uint32_t kFlagIsotropic = 1, kFlagBaked = 2;
+// Where the header's real-valued fields lie (formats.md), for their errors.
+constexpr std::uint64_t kEnergyMinOffset = 44, kMassOffset = 68;
 
 bool HostIsLittleEndian() {
     const std::uint16_t one = 1;
@@ -100,15 +106,20 @@ class Reader {
     explicit Reader(const std::string& path) : path_(path) {
         file_ = std::fopen(path.c_str(), "rb");
         if (!file_) throw GrdIoError(path + ": cannot open: " + std::strerror(errno));
-        std::fseek(file_, 0, SEEK_END);
-        size_ = static_cast<std::uint64_t>(std::ftell(file_));
-        std::fseek(file_, 0, SEEK_SET);
+        struct stat status;
+        if (fstat(fileno(file_), &status) == 0 && S_ISREG(status.st_mode)) {
+            size_ = static_cast<std::uint64_t>(status.st_size);
+            return;
+        }
+        ReadStreamWhole();
     }
     ~Reader() { std::fclose(file_); }
 
-    [[noreturn]] void Fail(const std::string& what) const {
-        throw GrdError(path_ + ": " + what + " (at byte " + std::to_string(offset_) + ")");
+    [[noreturn]] void Fail(const std::string& what) const { FailAt(offset_, what); }
+    [[noreturn]] void FailAt(std::uint64_t offset, const std::string& what) const {
+        throw GrdError(path_ + ": " + what + " (at byte " + std::to_string(offset) + ")");
     }
+    std::uint64_t Offset() const { return offset_; }
     void Bytes(void* data, std::size_t n, const char* what) {
         if (n > size_ - offset_) {
             Fail(std::string("truncated: file ends inside ") + what + "; expected " +
@@ -140,8 +151,26 @@ class Reader {
     std::uint64_t Left() const { return size_ - offset_; }
 
   private:
+    // A pipe has no size to check the counts against before allocating: read it whole first,
+    // then read the copy in memory as a file.
+    void ReadStreamWhole() {
+        std::vector<char> chunk(std::size_t(1) << 16);
+        std::size_t n;
+        while ((n = std::fread(chunk.data(), 1, chunk.size(), file_)) > 0)
+            stream_.insert(stream_.end(), chunk.data(), chunk.data() + n);
+        const bool failed = std::ferror(file_);
+        std::fclose(file_);
+        file_ = nullptr;
+        if (failed) throw GrdIoError(path_ + ": read error");
+        if (stream_.empty()) throw GrdError(path_ + ": empty: not a .grd file");
+        size_ = stream_.size();
+        file_ = fmemopen(stream_.data(), stream_.size(), "rb");
+        if (!file_) throw GrdIoError(path_ + ": cannot read: " + std::strerror(errno));
+    }
+
     std::string path_;
     std::FILE* file_;
+    std::vector<char> stream_;  // a pipe's bytes (ReadStreamWhole)
     std::uint64_t size_ = 0, offset_ = 0;
     Checksum checksum_;
 };
@@ -174,6 +203,13 @@ void ReadHeader(Reader& in, SplatSet& s, int* rings, int* rects, std::uint32_t* 
     if (!(s.params.radius > 0 && s.params.radius <= 1.5708)) in.Fail("radius out of (0, π/2]");
     if (*rings < 1 || *rings > 1000 || *rects < 1 || *rects > 4000) in.Fail("bad rings/rects");
     if (s.paths == 0 || s.photons > s.paths) in.Fail("bad photon or path count");
+    if (!(std::isfinite(s.params.energyMin) && s.params.energyMin >= 0))
+        in.FailAt(kEnergyMinOffset, "energy_min " + FormatNumber(s.params.energyMin) +
+                                        " is not a finite number >= 0");
+    if (!(std::isfinite(s.mass) && (horizon == 0 ? s.mass > 0 : s.mass >= 0)))
+        in.FailAt(kMassOffset, "the kernel mass " + FormatNumber(s.mass) +
+                                   " is not a finite number > 0 (0 in "
+                                   "renormalize mode)");
     s.params.norm = static_cast<Norm>(norm);
     s.params.horizon = static_cast<Horizon>(horizon);
     s.params.isotropic = *flags & kFlagIsotropic;
@@ -181,12 +217,58 @@ void ReadHeader(Reader& in, SplatSet& s, int* rings, int* rects, std::uint32_t* 
     s.invRadius = static_cast<float>(1.0 / s.params.radius);
 }
 
+// What formats.md promises of every value a writer produces, with room for rounding: weights,
+// energies and baked values finite and at most this in magnitude (their sums stay finite in a
+// float), splat centres unit vectors on the upper hemisphere.
+constexpr float kMaxMagnitude = 1e30f;
+constexpr float kUnitSlack = 1e-3f;
+
+// Checks each value read at `start` (the offset of values[0]); `wrong` says what is wrong with
+// one, or nothing.
+template <typename T, typename Wrong>
+void CheckEach(const Reader& in, std::uint64_t start, const std::vector<T>& values,
+               const Wrong& wrong) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const std::string problem = wrong(values[i], i);
+        if (!problem.empty()) in.FailAt(start + i * sizeof(T), problem);
+    }
+}
+
+std::string WrongMagnitude(float value, const char* what, std::size_t index) {
+    if (std::isfinite(value) && std::fabs(value) <= kMaxMagnitude) return {};
+    return std::string(what) + " " + std::to_string(index) + " is " + FormatNumber(value) +
+           "; expected a finite number within ±1e30";
+}
+
+std::string WrongDirection(const SplatGeometry& g, std::size_t index) {
+    const float values[] = {g.inX, g.inY, g.inZ, g.thetaIn, g.outX, g.outY, g.outZ};
+    const bool finite =
+        std::all_of(std::begin(values), std::end(values), [](float v) { return std::isfinite(v); });
+    auto unitAbove = [](float x, float y, float z) {
+        return std::fabs(std::sqrt(x * x + y * y + z * z) - 1) <= kUnitSlack && z >= -kUnitSlack;
+    };
+    if (finite && unitAbove(g.inX, g.inY, g.inZ) && unitAbove(g.outX, g.outY, g.outZ) &&
+        g.thetaIn >= -kUnitSlack && g.thetaIn <= kHalfPiF + kUnitSlack)
+        return {};
+    return "splat " + std::to_string(index) +
+           "'s centre is not two unit vectors on the upper hemisphere with theta_in in [0, pi/2]";
+}
+
 void ReadSplats(Reader& in, SplatSet& s) {
     const auto count = in.Value<std::uint64_t>("the splat count");
     if (count > s.photons) in.Fail("more splats than photons");
+    std::uint64_t start = in.Offset();
     s.geometry = in.Array<SplatGeometry>(count, "the splat directions");
-    s.weights = in.Array<float>(count * s.ncomps, "the splat weights");
-    s.energies = in.Array<float>(count * s.ncomps, "the splat energies");
+    CheckEach(in, start, s.geometry, WrongDirection);
+    const auto perSplat = std::size_t(s.ncomps);
+    for (auto [values, what] : {std::pair{&s.weights, "the weight of splat"},
+                                std::pair{&s.energies, "the energy of splat"}}) {
+        start = in.Offset();
+        *values = in.Array<float>(count * s.ncomps, what);
+        CheckEach(in, start, *values, [&, what = what](float v, std::size_t i) {
+            return WrongMagnitude(v, what, i / perSplat);
+        });
+    }
 }
 
 CellLists ReadLists(Reader& in, const SplatSet& s, std::uint64_t expectedCells) {
@@ -223,8 +305,11 @@ std::unique_ptr<BakedTable> ReadBaked(Reader& in, bool isotropic, int ncomps) {
         size *= d;
     }
     if ((isotropic && dims[1] != 1) || dims[0] < 2 || dims[2] < 2) in.Fail("bad table shape");
-    return std::make_unique<BakedTable>(isotropic, ncomps, dims,
-                                        in.Array<float>(size, "the baked table"));
+    const std::uint64_t start = in.Offset();
+    std::vector<float> values = in.Array<float>(size, "the baked table");
+    CheckEach(in, start, values,
+              [](float v, std::size_t i) { return WrongMagnitude(v, "baked value", i); });
+    return std::make_unique<BakedTable>(isotropic, ncomps, dims, std::move(values));
 }
 
 }  // namespace
@@ -232,6 +317,18 @@ std::unique_ptr<BakedTable> ReadBaked(Reader& in, bool isotropic, int ncomps) {
 const CellLists& GrdFile::Lists() const {
     if (IsIsotropic()) return static_cast<const BrdfIsoGrid&>(*grid).Lists();
     return static_cast<const BrdfGrid&>(*grid).Lists();
+}
+
+bool IsGrdFile(const std::string& path) {
+    if (path.size() > 4 && path.compare(path.size() - 4, 4, ".grd") == 0) return true;
+    struct stat status;
+    if (stat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode)) return false;
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return false;
+    char magic[8];
+    const bool isGrd = std::fread(magic, 1, 8, file) == 8 && std::memcmp(magic, kMagic, 8) == 0;
+    std::fclose(file);
+    return isGrd;
 }
 
 GrdFile ReadGrd(const std::string& path) {
@@ -242,8 +339,7 @@ GrdFile ReadGrd(const std::string& path) {
     std::uint32_t flags;
     ReadHeader(in, *splats, &rings, &rects, &flags);
     ReadSplats(in, *splats);
-    const HemisphereGrid hemisphere(rings, rects);
-    const std::uint64_t outCells = hemisphere.NumCells();
+    const std::uint64_t outCells = HemisphereGrid::CellCount(rings, rects);
     const std::uint64_t cells = splats->params.isotropic ? rings * outCells : outCells * outCells;
     CellLists lists = ReadLists(in, *splats, cells);
     GrdFile file;

@@ -38,7 +38,12 @@ struct GrdFile {
     const Brdf& Fastest() const { return baked ? static_cast<const Brdf&>(*baked) : *grid; }
 };
 
+// Reads a .grd from a file or a pipe (which is read whole first: counts are checked against the
+// size before anything is allocated).
 GrdFile ReadGrd(const std::string& path);
+// Whether `path` names a grid rather than a photon map: its name ends in .grd, or it is a
+// regular file that starts with the .grd magic. (A pipe cannot be looked into and read again.)
+bool IsGrdFile(const std::string& path);
 // Written under a temporary name and renamed when complete.
 void WriteGrd(const std::string& path, const SplatSet& splats, int rings, int rects,
               const CellLists& lists, const BakedTable* baked);

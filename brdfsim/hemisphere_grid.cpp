@@ -8,7 +8,20 @@
 
 namespace gonio {
 
-namespace {}  // namespace
+namespace {
+
+// The cells in band b (1-based) of `bands`: thesis eq. 4.14.
+int RectsOfBand(int b, int bands, int maxRects) {
+    return std::max(static_cast<int>(std::lround(std::sin(0.5 * kPi * b / bands) * maxRects)), 1);
+}
+
+}  // namespace
+
+std::uint64_t HemisphereGrid::CellCount(int bands, int maxRects) {
+    std::uint64_t cells = 0;
+    for (int b = 1; b <= bands; ++b) cells += std::uint64_t(RectsOfBand(b, bands, maxRects));
+    return cells;
+}
 
 HemisphereGrid::HemisphereGrid(int bands, int maxRects)
     : bands_(bands), maxRects_(maxRects), bandWidth_(0.5 * kPi / bands) {
@@ -17,9 +30,7 @@ HemisphereGrid::HemisphereGrid(int bands, int maxRects)
     }
     firstCell_.push_back(0);
     for (int b = 1; b <= bands; ++b) {
-        // thesis eq. 4.14
-        const int rects =
-            std::max(static_cast<int>(std::lround(std::sin(0.5 * kPi * b / bands) * maxRects)), 1);
+        const int rects = RectsOfBand(b, bands, maxRects);
         firstCell_.push_back(firstCell_.back() + rects);
         bandOfCell_.insert(bandOfCell_.end(), rects, b - 1);
     }

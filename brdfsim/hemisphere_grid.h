@@ -5,6 +5,7 @@
 
 #include <Imath/ImathVec.h>
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,9 @@ class HemisphereGrid {
     int NumBands() const { return bands_; }
     int MaxRects() const { return maxRects_; }
     int NumCells() const { return firstCell_.back(); }
+    // The cells of a grid of these bands and rects, without building it (which costs a bounding
+    // cap per cell): what a reader checks a file against.
+    static std::uint64_t CellCount(int bands, int maxRects);
     int RectsInBand(int band) const { return firstCell_[band + 1] - firstCell_[band]; }
 
     // The cell holding unit direction w (z >= 0).

@@ -18,6 +18,12 @@ namespace {
 
 constexpr std::size_t kChunkBytes = 8 << 20;
 constexpr float kAngleSlack = 1e-4f;  // rounding in files written by other programs
+// Beyond what any tracer writes, values lose the map's precision or overflow the splats' floats
+// (a weight divides by the probability): φ turned more than twice round, densities further
+// from 1 than 1e±12 per steradian, energies beyond ±1e6.
+constexpr float kMaxPhi = 4 * kPiF;
+constexpr float kMinProbability = 1e-12f, kMaxProbability = 1e12f;
+constexpr float kMaxEnergy = 1e6f;
 
 bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
@@ -49,7 +55,12 @@ std::string CheckPhoton(const float* row, int stride) {
     if (row[kThetaOut] < -kAngleSlack || row[kThetaOut] > kHalfPiF + kAngleSlack) {
         return "expected theta_out in [0, pi/2] radians (photons escaping downwards have no line)";
     }
-    if (!(row[kProbability] > 0.0f)) return "expected a positive probability";
+    if (std::fabs(row[kPhiIn]) > kMaxPhi || std::fabs(row[kPhiOut]) > kMaxPhi)
+        return "expected phi_in and phi_out within ±4π radians";
+    if (!(row[kProbability] >= kMinProbability && row[kProbability] <= kMaxProbability))
+        return "expected a probability density in [1e-12, 1e12] per steradian";
+    for (int i = kFirstColour; i < stride; ++i)
+        if (std::fabs(row[i]) > kMaxEnergy) return "expected energies within ±1e6";
     return {};
 }
 

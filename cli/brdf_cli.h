@@ -62,6 +62,8 @@ struct PhotonMapSettings {
 // with `settings` and a grid of DefaultGridFor, summed directly when settings.simple, or
 // estimated with an adaptive radius when settings.knn > 0.
 LoadedBrdf LoadBrdf(const std::string& path, const PhotonMapSettings& settings, bool useBaked);
+// A .grd whatever its name (eval and section read nothing else, from a file or a pipe).
+LoadedBrdf LoadGrid(const std::string& path, bool useBaked);
 
 // Options shared by the tools that read photon maps.
 void AddNormOption(CLI::App* app, std::string* norm, std::string* horizon);

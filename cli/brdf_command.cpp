@@ -111,14 +111,16 @@ PhotonMapSettings MakeSettings(double spread, double energyMin, const std::strin
     return settings;
 }
 
-LoadedBrdf LoadBrdf(const std::string& path, const PhotonMapSettings& settings, bool useBaked) {
+LoadedBrdf LoadGrid(const std::string& path, bool useBaked) {
     LoadedBrdf loaded;
-    const bool isGrd = path.size() > 4 && path.compare(path.size() - 4, 4, ".grd") == 0;
-    if (isGrd) {
-        loaded.grd = std::make_unique<GrdFile>(ReadGrd(path));
-        loaded.brdf = useBaked ? &loaded.grd->Fastest() : loaded.grd->grid.get();
-        return loaded;
-    }
+    loaded.grd = std::make_unique<GrdFile>(ReadGrd(path));
+    loaded.brdf = useBaked ? &loaded.grd->Fastest() : loaded.grd->grid.get();
+    return loaded;
+}
+
+LoadedBrdf LoadBrdf(const std::string& path, const PhotonMapSettings& settings, bool useBaked) {
+    if (IsGrdFile(path)) return LoadGrid(path, useBaked);
+    LoadedBrdf loaded;
     const PhotonMap map = ReadPhotonMap(path);
     SplatParams params;
     params.radius = settings.spread;

@@ -16,11 +16,6 @@ namespace gonio::brdfcli {
 
 namespace {
 
-bool EndsWith(const std::string& text, const std::string& end) {
-    return text.size() >= end.size() &&
-           text.compare(text.size() - end.size(), end.size(), end) == 0;
-}
-
 void AddEval(CLI::App& brdf, int* exitCode) {
     auto* cmd = brdf.add_subcommand("eval", "print f(ω'→ω) in 1/sr (angles in degrees)");
     auto path = std::make_shared<std::string>();
@@ -33,8 +28,7 @@ void AddEval(CLI::App& brdf, int* exitCode) {
     cmd->add_flag("--grid", *gridOnly, "sum the splats even when the file has a baked table");
     cmd->callback([=] {
         *exitCode = RunGuarded("eval", [&] {
-            if (!EndsWith(*path, ".grd")) throw UsageError("eval reads a .grd (see brdf opt)");
-            const LoadedBrdf loaded = LoadBrdf(*path, {}, !*gridOnly);
+            const LoadedBrdf loaded = LoadGrid(*path, !*gridOnly);
             const auto& a = *angles;
             std::vector<float> f(loaded.brdf->NumComponents());
             loaded.brdf->EvalAngles(a[0] * kDegree, a[1] * kDegree, a[2] * kDegree, a[3] * kDegree,
@@ -53,7 +47,7 @@ void AddInfo(CLI::App& brdf, int* exitCode) {
     cmd->add_option("FILE", *path, "photon map (.pm) or grid (.grd)")->required();
     cmd->callback([=] {
         *exitCode = RunGuarded("info", [&] {
-            if (EndsWith(*path, ".grd")) {
+            if (IsGrdFile(*path)) {
                 const GrdFile file = ReadGrd(*path);
                 PrintGrdInfo(*path, file, stdout);
             } else {
@@ -237,8 +231,7 @@ void AddSection(CLI::App& brdf, int* exitCode) {
             std::vector<LoadedBrdf> loaded;
             std::vector<std::pair<std::string, const Brdf*>> sources;
             for (const std::string& path : *files) {
-                if (!EndsWith(path, ".grd")) throw UsageError(path + ": section reads .grd files");
-                loaded.push_back(LoadBrdf(path, {}, *baked));
+                loaded.push_back(LoadGrid(path, *baked));
                 sources.emplace_back(BaseName(path), loaded.back().brdf);
             }
             RunSections(sources, *args, *samples);

@@ -155,7 +155,7 @@ class ShadingContext {
     // arriving from wIn and leaving towards wOut (3 × count each, unit, in the BRDF's local frame:
     // z the normal, x the direction of anisotropy), at each active point of `count`: ncomps ×
     // count floats into out. Directions at or below the surface give 0. False (and black) if
-    // the file cannot be used; the context reports why through RuntimeWarning. The default
+    // the file cannot be used; the context reports why through RuntimeError. The default
     // knows no BRDF files.
     virtual bool MeasuredBrdf(const std::string& name, int count, const float* wIn,
                               const float* wOut, const uint8_t* active, float* out);
@@ -221,6 +221,11 @@ class ShadingContext {
     // Reports a run-time problem (division by zero, NaN, a missing texture) once per `key` and
     // shader statement; `message` without location: the context adds Statement().
     virtual void RuntimeWarning(const std::string& key, const std::string& message) = 0;
+    // The same for a problem that makes the picture wrong (a brdf() file that cannot be used):
+    // a renderer fails the frame. By default a warning, for contexts that make no picture.
+    virtual void RuntimeError(const std::string& key, const std::string& message) {
+        RuntimeWarning(key, message);
+    }
 
     // The shader statement being run ("file.sl:12"), set by the interpreter before each
     // built-in call and warning, so that run-time warnings name the shader's line; empty

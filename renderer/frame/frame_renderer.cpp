@@ -456,6 +456,9 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     const Imath::Box2i range = film.PixelRange();
     const int width = range.max.x - range.min.x + 1, height = range.max.y - range.min.y + 1;
 
+    // A shader's run-time error (a brdf() file it cannot use) makes the picture wrong: then the
+    // frame is not written.
+    const int errorsBefore = diagnostics.ErrorCount();
     Progress progress("render", uint64_t(width) * height, settings.progress);
     tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
         [&] { return shading->MakeWorker(); });
@@ -479,6 +482,11 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
         }
     });
     progress.Done();
+    if (diagnostics.ErrorCount() > errorsBefore) {
+        diagnostics.Error(FileLoc{}, "frame " + std::to_string(frame.number) +
+                                         " is not written: its shaders met the errors above");
+        return true;
+    }
 
     Image image = film.Resolve();
     ApplyImager(frame, settings.seed, image, diagnostics);  // before Exposure: RISpec §4.1.2

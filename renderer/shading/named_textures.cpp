@@ -48,7 +48,7 @@ bool NamedTextures::MeasuredBrdf(sl::ShadingContext& asker, int count, const std
     std::string error;
     const std::shared_ptr<const GrdFile> file = brdfs_.Get(Find(name), &error);
     if (!file) {
-        asker.RuntimeWarning("brdf " + name, "brdf(\"" + name + "\"): " + error);
+        asker.RuntimeError("brdf " + name, "brdf(\"" + name + "\"): " + error);
         return false;
     }
     const Brdf& brdf = file->Fastest();

@@ -372,6 +372,15 @@ bool RenderContext::RendererInfo(const std::string& name, const sl::TypeSpec& ty
 }
 
 void RenderContext::RuntimeWarning(const std::string& key, const std::string& message) {
+    ReportRuntime(Severity::Warning, key, message);
+}
+
+void RenderContext::RuntimeError(const std::string& key, const std::string& message) {
+    ReportRuntime(Severity::Error, key, message);
+}
+
+void RenderContext::ReportRuntime(Severity severity, const std::string& key,
+                                  const std::string& message) {
     // At the shader statement, naming the RIB request that bound the shader.
     const std::string& where = Statement();
     const FileLoc request = shader_ ? shader_->loc : FileLoc{};
@@ -379,7 +388,7 @@ void RenderContext::RuntimeWarning(const std::string& key, const std::string& me
     const std::string bound = where.empty() || !shader_ ? std::string()
                                                         : " (shader \"" + shader_->name + "\" of " +
                                                               request.ToString() + ")";
-    shaders_.GetDiagnostics().WarningOnce("runtime " + where + key, loc, message + bound);
+    shaders_.GetDiagnostics().ReportOnce(severity, "runtime " + where + key, loc, message + bound);
 }
 
 void RenderContext::Print(const std::string& text) {

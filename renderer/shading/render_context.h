@@ -110,6 +110,7 @@ class RenderContext : public sl::ShadingContext {
     bool RendererInfo(const std::string& name, const sl::TypeSpec& type, std::vector<float>* floats,
                       std::string* text) const override;
     void RuntimeWarning(const std::string& key, const std::string& message) override;
+    void RuntimeError(const std::string& key, const std::string& message) override;
     void Print(const std::string& text) override;
     const int* UNeighbours() const override {
         return neighbours_ ? neighbours_->u.data() : noNeighbours_.data();
@@ -122,6 +123,7 @@ class RenderContext : public sl::ShadingContext {
     }
 
   private:
+    void ReportRuntime(Severity severity, const std::string& key, const std::string& message);
     // Runs the lights for the main points at positions P (3 × n, current space) into
     // `results`, sharing them with the neighbour points; `active` (may be null) limits them.
     void EvaluateLights(const float* P, const uint8_t* active,

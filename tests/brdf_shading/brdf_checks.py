@@ -15,7 +15,8 @@ stands for.
 * rotation: turning D by 90° about N turns the image of an anisotropic BRDF (brushed metal,
   seen and lit straight from above) by 90°, while the image itself is not symmetric under that
   turn; the isotropic Lambert grid gives the same image for any D.
-* missing: a missing .grd is reported once, with the shader's file and line, and shades black.
+* missing: a missing .grd is one error, with the shader's file and line; the frame is not
+  written and the render exits 1.
 
 The photon counts restrict the incidence to a band around the lights (BRDFLight's thetamin and
 thetamax) so that a few seconds of tracing give the estimator enough photons there."""
@@ -201,15 +202,14 @@ def check_rotation(ws):
 def check_missing(ws):
     rib = frames([("missing", 'Surface "brdfsurface" "string grid" "no_such.grd"')],
                  look_at((0.0, 0.0, 4.0), (0.0, 0.0, 0.0)), [distant(30, 0)], size=16)
-    proc = ws.render(rib, "missing")
+    proc = ws.render(rib, "missing", expect_code=1)
     lines = [line for line in proc.stderr.splitlines() if "no_such.grd" in line]
     expect(len(lines) == 1, f"expected one message about no_such.grd, got:\n{proc.stderr}")
-    expect(re.search(r"brdf_lighting\.h:\d+", lines[0]) is not None,
-           f"the message does not name the shader's file and line: {lines[0]}")
-    (image,) = read_images(ws.path("missing.tif"))
-    expect(max(max(p[:3]) for p in image.pixels.values()) == 0.0,
-           "a missing grid did not shade black")
-    return "one message: " + lines[0]
+    expect(re.search(r"brdf_lighting\.h:\d+: error: ", lines[0]) is not None,
+           f"the error does not name the shader's file and line: {lines[0]}")
+    expect(not os.path.exists(ws.path("missing.tif")),
+           "a frame whose grid is missing was written (shaded black)")
+    return "one error, no image: " + lines[0]
 
 
 CHECKS = {"lambert": check_lambert, "phong": check_phong, "rotation": check_rotation,

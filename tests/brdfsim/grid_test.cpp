@@ -146,5 +146,13 @@ TEST(Table41, SplatsPerCellReport) {
     }
 }
 
+// A reader checks a file's cell count against CellCount without building the grid.
+TEST(HemisphereGrid, CellCountIsTheBuiltGridsCount) {
+    for (const auto& [bands, rects] : {std::pair{1, 1}, {4, 8}, {7, 3}, {30, 60}, {90, 181}})
+        EXPECT_EQ(HemisphereGrid::CellCount(bands, rects),
+                  std::uint64_t(HemisphereGrid(bands, rects).NumCells()))
+            << bands << " x " << rects;
+}
+
 }  // namespace
 }  // namespace gonio

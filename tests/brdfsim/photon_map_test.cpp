@@ -96,7 +96,11 @@ TEST(PhotonMap, RejectsMalformedFilesWithLineNumbers) {
     const std::string wrongCount = ErrorOf("2\n0.5 0 0.7 3.1 0.1 1 1\n0.5 0 0.7 3.1 0.1 1\n");
     EXPECT_NE(wrongCount.find(":3: expected 7 values"), std::string::npos) << wrongCount;
     EXPECT_NE(ErrorOf("1\n0.5 0 0.7 x 0.1 1\n").find(":2: expected numbers"), std::string::npos);
-    EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0 1\n").find("positive probability"), std::string::npos);
+    EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0 1\n").find("probability density in [1e-12, 1e12]"),
+              std::string::npos);
+    EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 1e-38 1\n").find("probability density"), std::string::npos);
+    EXPECT_NE(ErrorOf("1\n0.5 0 0.7 1e30 0.1 1\n").find("phi_in and phi_out"), std::string::npos);
+    EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0.1 -1e30\n").find("energies within"), std::string::npos);
     EXPECT_NE(ErrorOf("1\n0.5 0 2.0 3 0.1 1\n").find("theta_out"), std::string::npos);
     EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0.1 nan\n").find("finite"), std::string::npos);
     EXPECT_NE(ErrorOf("1\n0.5 0 0.7 3 0.1\n").find("at least one colour"), std::string::npos);

@@ -9,6 +9,7 @@ must not exist afterwards.
 import argparse
 import gzip
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -34,6 +35,57 @@ def two_frames():
 def gzip_cut(text, fraction):
     data = gzip.compress(text.encode(), mtime=0)
     return data[: int(len(data) * fraction)]
+
+
+# A small valid .grd (made once by main: GRD_PATHS Lambert paths, every photon kept as a splat)
+# and the same file with one field changed and its checksum made right again, so that only the
+# range check can catch it.
+GRD_PATHS = 2000
+SMALL_GRD = {}
+WEIGHTS = 84 + 32 * GRD_PATHS  # formats.md: the splat weights follow S 32-byte centres
+
+
+def grd_checksum(data):
+    """formats.md's checksum: a 64-bit FNV-style hash over 8-byte little-endian words."""
+    mask, value = (1 << 64) - 1, 0xcbf29ce484222325
+    for i in range(0, len(data), 8):
+        word = int.from_bytes(data[i:i + 8].ljust(8, b"\0"), "little")
+        value = ((value ^ word) * 0x100000001b3) & mask
+        value ^= value >> 29
+    return value
+
+
+class ChangedGrd:
+    """SMALL_GRD with the struct `layout` value at `offset` replaced."""
+
+    def __init__(self, *changes):
+        self.changes = changes  # (offset, layout, value), ...
+
+    def content(self):
+        data = bytearray(SMALL_GRD["bytes"])
+        for offset, layout, value in self.changes:
+            struct.pack_into("<" + layout, data, offset, value)
+        struct.pack_into("<Q", data, len(data) - 16, grd_checksum(bytes(data[:-16])))
+        return bytes(data)
+
+
+def photon_map(line):
+    return "2\n" + line + "\n0.5 0 0.5 1 0.159 0.5 0.5 0.5\n"
+
+
+BRDF_SHADER = """surface b(string g = "") {
+    normal Nf = faceforward(normalize(N), I);
+    Ci = 0;
+    illuminance(P, Nf, PI / 2)
+        Ci += Cl * brdf(g, Nf, normalize(-I), normalize(L), normalize(dPdu));
+    Oi = 1;
+}
+"""
+
+
+def brdf_scene(grid):
+    return scene("s.tif", "").replace(
+        "WorldBegin\n", f'WorldBegin\nLightSource "distantlight" 1\nSurface "b" "string g" "{grid}"\n')
 
 
 # (name, arguments after gonio, files {name: text or bytes}, stdin file, exit status,
@@ -94,10 +146,52 @@ CASES = [
     ("merge_output_is_an_input", ["brdf", "merge", "b.pm", "a.pm", "-o", "a.pm"],
      {"a.pm": "one map\n", "b.pm": "another\n"}, None,
      2, "the output a.pm is also an input (a.pm)", []),
+    # Values a .grd's checksum cannot catch (formats.md: a range check per field).
+    ("grd_nan_weight", ["brdf", "eval", "x.grd", "30", "0", "30", "180"],
+     {"x.grd": ChangedGrd((WEIGHTS, "f", float("nan")))}, None,
+     1, f"x.grd: the weight of splat 0 is nan; expected a finite number within ±1e30 (at byte "
+        f"{WEIGHTS})", []),
+    ("grd_huge_energy", ["brdf", "info", "x.grd"],
+     {"x.grd": ChangedGrd((WEIGHTS + 4 * 3 * GRD_PATHS + 4 * 3 * 7, "f", 1e35))}, None,
+     1, "x.grd: the energy of splat 7 is 1e+35; expected a finite number within ±1e30", []),
+    ("grd_splat_not_a_direction", ["brdf", "info", "x.grd"],
+     {"x.grd": ChangedGrd((84 + 3 * 32 + 16, "f", 2.0))}, None,
+     1, "x.grd: splat 3's centre is not two unit vectors on the upper hemisphere with theta_in "
+        "in [0, pi/2] (at byte 180)", []),
+    ("grd_negative_energy_min", ["brdf", "info", "x.grd"],
+     {"x.grd": ChangedGrd((44, "d", -1.0))}, None,
+     1, "x.grd: energy_min -1 is not a finite number >= 0 (at byte 44)", []),
+    ("grd_infinite_mass", ["brdf", "info", "x.grd"],
+     {"x.grd": ChangedGrd((68, "d", float("inf")))}, None,
+     1, "x.grd: the kernel mass inf is not a finite number > 0", []),
+    # The largest rings x rects the format allows: rejected at once, not after a minute and a
+    # half of building a grid of 2.5 million cells.
+    ("grd_largest_rings_rects", ["brdf", "info", "x.grd"],
+     {"x.grd": ChangedGrd((28, "I", 1000), (32, "I", 4000))}, None,
+     1, "does not match rings and rects", []),
+    ("pm_phi_huge", ["brdf", "info", "x.pm"],
+     {"x.pm": photon_map("0.5 0 0.5 1e30 0.159 0.5 0.5 0.5")}, None,
+     1, "x.pm:2: expected phi_in and phi_out within ±4π radians", []),
+    ("pm_probability_tiny", ["brdf", "opt", "4", "8", "17deg", "0", "x.pm", "x.grd"],
+     {"x.pm": photon_map("0.5 0 0.5 1 1e-38 0.5 0.5 0.5")}, None,
+     1, "x.pm:2: expected a probability density in [1e-12, 1e12] per steradian", ["x.grd"]),
+    ("pm_energy_huge", ["brdf", "info", "x.pm"],
+     {"x.pm": photon_map("0.5 0 0.5 1 0.159 -1e30 0.5 0.5")}, None,
+     1, "x.pm:2: expected energies within ±1e6", []),
+    # brdf() with a file it cannot use fails the render; no picture shaded black is written.
+    ("brdf_missing_grd", ["render", "s.rib"],
+     {"s.rib": brdf_scene("missing.grd"), "b.sl": BRDF_SHADER}, None,
+     1, 'brdf("missing.grd"): missing.grd: cannot open', ["s.tif"]),
+    ("brdf_corrupt_grd", ["render", "s.rib"],
+     {"s.rib": brdf_scene("x.grd"), "b.sl": BRDF_SHADER,
+      "x.grd": ChangedGrd((WEIGHTS, "f", float("nan")))}, None,
+     1, "frame 0 is not written: its shaders met the errors above", ["s.tif"]),
 ]
 
 
 def as_bytes(content):
+    if isinstance(content, ChangedGrd):
+        return content.content()
     return content if isinstance(content, bytes) else content.encode()
 
 
@@ -189,6 +283,30 @@ def expect_catrib_output_linear_in_nesting(gonio, root):
     return None
 
 
+def make_small_grd(gonio, root):
+    work = os.path.join(root, "small_grd")
+    os.makedirs(work)
+    for command in (["brdf", "synth", "lambert:0.5", "-n", str(GRD_PATHS), "-o", "l.pm"],
+                    ["brdf", "opt", "4", "8", "17deg", "0", "l.pm", "l.grd"]):
+        subprocess.run([gonio] + command, cwd=work, check=True, capture_output=True, timeout=60)
+    SMALL_GRD["bytes"] = read_file(os.path.join(work, "l.grd"))
+    SMALL_GRD["path"] = os.path.join(work, "l.grd")
+
+
+def expect_grd_reads_from_a_pipe(gonio, root):
+    """A valid .grd on standard input evaluates as the file does. Returns the reason it failed,
+    or None."""
+    angles = ["30", "0", "30", "180"]
+    from_file = subprocess.run([gonio, "brdf", "eval", SMALL_GRD["path"]] + angles,
+                               capture_output=True, text=True, timeout=60)
+    with open(SMALL_GRD["path"], "rb") as grid:
+        from_pipe = subprocess.run([gonio, "brdf", "eval", "/dev/stdin"] + angles, stdin=grid,
+                                   capture_output=True, text=True, timeout=60)
+    if from_pipe.returncode != 0 or from_pipe.stdout != from_file.stdout:
+        return f"exit status {from_pipe.returncode}: {from_pipe.stdout}{from_pipe.stderr}"
+    return None
+
+
 def report(name, reason):
     """Prints the outcome of one case; returns 1 when it failed."""
     print(f"ok   {name}" if reason is None else f"FAIL {name}: {reason}")
@@ -201,11 +319,13 @@ def main():
     args = parser.parse_args()
     gonio = os.path.abspath(args.gonio)
     with tempfile.TemporaryDirectory(prefix="gonio-robustness-") as root:
+        make_small_grd(gonio, root)
         failures = sum(report(case[0], run_case(gonio, root, case)) for case in CASES)
+        failures += report("grd_from_a_pipe", expect_grd_reads_from_a_pipe(gonio, root))
         failures += report("source_date_epoch",
                            expect_source_date_epoch_makes_files_byte_identical(gonio, root))
         failures += report("catrib_nesting", expect_catrib_output_linear_in_nesting(gonio, root))
-    print(f"{len(CASES) + 2 - failures} of {len(CASES) + 2} cases as promised")
+    print(f"{len(CASES) + 3 - failures} of {len(CASES) + 3} cases as promised")
     return 1 if failures else 0
 
 if __name__ == "__main__":
