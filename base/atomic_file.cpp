@@ -6,11 +6,14 @@
 #include <cstdio>
 #include <cstring>
 
+#include "base/interrupt_cleanup.h"
+
 namespace gonio {
 
 std::string WriteFileAtomically(const std::string& path, const std::string& text) {
     // The pid keeps two processes that write the same file from sharing a temporary name.
     const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+    const PendingTemporary pending(temporary);
     std::FILE* file = std::fopen(temporary.c_str(), "wb");
     if (!file) return std::strerror(errno);
     const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();

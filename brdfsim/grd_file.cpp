@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/diagnostics.h"
+#include "base/interrupt_cleanup.h"
 #include "base/limits.h"
 #include "base/math.h"
 
@@ -365,6 +366,7 @@ void WriteGrd(const std::string& path, const SplatSet& s, int rings, int rects,
               const CellLists& lists, const BakedTable* baked) {
     if (!HostIsLittleEndian()) throw GrdIoError(path + ": .grd needs a little-endian host");
     const std::string temp = path + ".tmp." + std::to_string(::getpid());
+    const PendingTemporary pending(temp);
     try {
         Writer out(temp);
         out.Bytes(kMagic, 8);

@@ -289,6 +289,7 @@ PhotonMapHeader ReadPhotonMapHeader(const std::string& path) {
 PhotonMapWriter::PhotonMapWriter(const std::string& path, const PhotonMapHeader& header, int ncomps)
     : path_(path),
       tempPath_(path + ".tmp." + std::to_string(::getpid())),
+      pending_(tempPath_),
       header_(header),
       ncomps_(ncomps) {
     if (ncomps < 1) throw PhotonMapError(path + ": a photon needs at least one colour value");

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "base/interrupt_cleanup.h"
+
 namespace gonio {
 
 // A malformed photon map; what() reads "file:line: expected ..." where a line is known.
@@ -104,6 +106,7 @@ class PhotonMapWriter {
 
   private:
     std::string path_, tempPath_;
+    PendingTemporary pending_;  // tempPath_, removed if the run is interrupted
     std::FILE* file_ = nullptr;
     PhotonMapHeader header_;
     int ncomps_;

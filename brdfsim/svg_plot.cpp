@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "base/interrupt_cleanup.h"
+
 namespace gonio {
 
 namespace {
@@ -80,6 +82,7 @@ void WriteSvgPlot(const std::string& path, const PlotLabels& labels,
     svg << "</svg>\n";
 
     const std::string temp = path + ".tmp." + std::to_string(::getpid());
+    const PendingTemporary pending(temp);
     {
         std::ofstream file(temp, std::ios::binary);
         file << svg.str();

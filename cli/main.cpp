@@ -1,8 +1,10 @@
 #include <CLI/CLI.hpp>
 
+#include "base/interrupt_cleanup.h"
 #include "commands.h"
 
 int main(int argc, char** argv) {
+    gonio::RemoveTemporariesOnInterrupt();
     CLI::App app{"gonio: a RenderMan-style renderer and virtual gonioreflectometer"};
     app.require_subcommand(1);
     int exitCode = 0;

@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "base/interrupt_cleanup.h"
 #include "imageio/builtin_drivers.h"
 #include "imageio/oiio_plugin.h"
 #include "imageio/pixel_conversion.h"
@@ -101,6 +102,7 @@ std::string WriteImageFile(const std::string& format, const std::string& path,
     if (!folder.empty() && !fs::is_directory(folder, statError))
         return "the folder \"" + folder.string() + "\" does not exist";
     const std::string temporary = TemporaryName(path);
+    const PendingTemporary pending(temporary);
     std::string error = WriteThroughDriver(format, temporary, spec, pixels);
     if (error.empty()) {
         std::error_code renameError;

@@ -9,6 +9,7 @@ must not exist afterwards.
 import argparse
 import gzip
 import os
+import signal
 import struct
 import subprocess
 import sys
@@ -307,6 +308,33 @@ def expect_grd_reads_from_a_pipe(gonio, root):
     return None
 
 
+def expect_interrupt_removes_partial_files(gonio, root):
+    """SIGINT and SIGTERM while a photon map is being written: the run ends by the signal, says
+    it was interrupted, and leaves no *.tmp* file. Returns the reason it failed, or None."""
+    for signal_number, word in ((signal.SIGINT, "interrupted"), (signal.SIGTERM, "terminated")):
+        work = os.path.join(root, f"interrupt_{signal_number}")
+        os.makedirs(work)
+        run = subprocess.Popen([gonio, "brdf", "synth", "lambert:0.5", "-n", "1000000000", "-o",
+                                "big.pm"], cwd=work, stderr=subprocess.PIPE, text=True)
+        deadline = time.time() + 30
+        while not any(".tmp" in f for f in os.listdir(work)) and time.time() < deadline:
+            time.sleep(0.05)
+        run.send_signal(signal_number)
+        try:
+            _, errors = run.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            run.kill()
+            return f"still running 30 s after signal {signal_number}"
+        if run.returncode != -signal_number:
+            return f"exit status {run.returncode} after signal {signal_number}: {errors}"
+        if word not in errors:
+            return f"no word of the signal ({word}) in: {errors}"
+        left = os.listdir(work)
+        if left:
+            return f"left {', '.join(left)} after signal {signal_number}"
+    return None
+
+
 def report(name, reason):
     """Prints the outcome of one case; returns 1 when it failed."""
     print(f"ok   {name}" if reason is None else f"FAIL {name}: {reason}")
@@ -322,10 +350,11 @@ def main():
         make_small_grd(gonio, root)
         failures = sum(report(case[0], run_case(gonio, root, case)) for case in CASES)
         failures += report("grd_from_a_pipe", expect_grd_reads_from_a_pipe(gonio, root))
+        failures += report("interrupt", expect_interrupt_removes_partial_files(gonio, root))
         failures += report("source_date_epoch",
                            expect_source_date_epoch_makes_files_byte_identical(gonio, root))
         failures += report("catrib_nesting", expect_catrib_output_linear_in_nesting(gonio, root))
-    print(f"{len(CASES) + 3 - failures} of {len(CASES) + 3} cases as promised")
+    print(f"{len(CASES) + 4 - failures} of {len(CASES) + 4} cases as promised")
     return 1 if failures else 0
 
 if __name__ == "__main__":
