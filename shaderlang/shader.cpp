@@ -63,7 +63,7 @@ std::shared_ptr<const Shader> CompileShaderSource(const std::string& source,
     shader->file_ = fileName;
     shader->colorComponents_ = options.colorComponents;
     shader->ambientLight_ = shader->type_ == ShaderType::Light && program->ambientLight;
-    for (Node* formal : definition->kids[0]->kids) {
+    for (Node* formal : definition->Formals()) {
         const Symbol* s = formal->symbol;
         if (!s) continue;
         ShaderParam param;

@@ -1,8 +1,10 @@
 #pragma once
 // The syntax tree of a shader source file. One Node type with a kind keeps the grammar actions
-// and the passes short; the meaning of `kids` per kind is listed below. Nodes live in an arena
-// owned by the parse (SyntaxTree), so Bison's error recovery never leaks.
+// and the passes short; the meaning of `kids` per kind is listed below, and the passes read them
+// through Node's named accessors (only the parser builds `kids` by position). Nodes live in an
+// arena owned by the parse (SyntaxTree), so Bison's error recovery never leaks.
 
+#include <cassert>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,6 +76,125 @@ struct Node {
     int builtin = -1;          // Call: the BuiltinTable() row
     Node* function = nullptr;  // Call: the user FunctionDef
     bool hasError = false;     // an error was reported here: no follow-on errors
+
+    // The kids by meaning, for the kinds named (see NodeKind); any other kind is a bug.
+    // ShaderDef, FunctionDef: the formal parameters (VarDecls).
+    const std::vector<Node*>& Formals() const {
+        assert(kind == NodeKind::ShaderDef || kind == NodeKind::FunctionDef);
+        return kids[0]->kids;
+    }
+    // ShaderDef, FunctionDef: the Block; While, For, Illuminance, Illuminate, Solar: the
+    // statement run per iteration.
+    Node* Body() const {
+        switch (kind) {
+            case NodeKind::ShaderDef:
+            case NodeKind::FunctionDef:
+            case NodeKind::While:
+                return kids[1];
+            case NodeKind::For:
+                return kids[3];
+            default:
+                assert(IsLightLoop());
+                return kids.back();
+        }
+    }
+    bool IsLightLoop() const {
+        return kind == NodeKind::Illuminance || kind == NodeKind::Illuminate ||
+               kind == NodeKind::Solar;
+    }
+    // Illuminance, Illuminate, Solar: the arguments before the body.
+    std::vector<Node*> LightLoopArguments() const {
+        assert(IsLightLoop());
+        return {kids.begin(), kids.end() - 1};
+    }
+    const std::vector<Node*>& Statements() const {
+        assert(kind == NodeKind::Block);
+        return kids;
+    }
+    // A declaration statement: a Block of VarDecls, declared in the enclosing scope.
+    bool IsDeclaration() const {
+        return kind == NodeKind::Block && !kids.empty() && kids[0]->kind == NodeKind::VarDecl;
+    }
+    // VarDecl: the initial (or default) value, null when none.
+    Node* Initialiser() const {
+        assert(kind == NodeKind::VarDecl);
+        return kids[0];
+    }
+    // ExprStmt: the expression; Return: the value, null when none.
+    Node* Expression() const {
+        assert(kind == NodeKind::ExprStmt || kind == NodeKind::Return);
+        return kids[0];
+    }
+    // If, While, Ternary; For (null when none).
+    Node* Condition() const {
+        assert(kind == NodeKind::If || kind == NodeKind::While || kind == NodeKind::For ||
+               kind == NodeKind::Ternary);
+        return kids[kind == NodeKind::For ? 1 : 0];
+    }
+    // If: the statements (Else null when none); Ternary: the values.
+    Node* Then() const {
+        assert(kind == NodeKind::If || kind == NodeKind::Ternary);
+        return kids[1];
+    }
+    Node* Else() const {
+        assert(kind == NodeKind::If || kind == NodeKind::Ternary);
+        return kids[2];
+    }
+    // For: the expressions before the first and after each iteration, null when none.
+    Node* Init() const {
+        assert(kind == NodeKind::For);
+        return kids[0];
+    }
+    Node* Step() const {
+        assert(kind == NodeKind::For);
+        return kids[2];
+    }
+    // Tuple, InitList.
+    const std::vector<Node*>& Elements() const {
+        assert(kind == NodeKind::Tuple || kind == NodeKind::InitList);
+        return kids;
+    }
+    // Unary, Cast.
+    Node* Operand() const {
+        assert(kind == NodeKind::Unary || kind == NodeKind::Cast);
+        return kids[0];
+    }
+    // Binary.
+    Node* Lhs() const {
+        assert(kind == NodeKind::Binary);
+        return kids[0];
+    }
+    Node* Rhs() const {
+        assert(kind == NodeKind::Binary);
+        return kids[1];
+    }
+    // Assign: the lvalue (Identifier or Index) and the value stored.
+    Node* Target() const {
+        assert(kind == NodeKind::Assign);
+        return kids[0];
+    }
+    Node* Value() const {
+        assert(kind == NodeKind::Assign);
+        return kids[1];
+    }
+    // Index: array[subscript].
+    Node* Array() const {
+        assert(kind == NodeKind::Index);
+        return kids[0];
+    }
+    Node* Subscript() const {
+        assert(kind == NodeKind::Index);
+        return kids[1];
+    }
+    // Call (the type checker rewrites texture("name"[c], ...)'s).
+    std::vector<Node*>& Arguments() {
+        assert(kind == NodeKind::Call);
+        return kids;
+    }
+    const std::vector<Node*>& Arguments() const {
+        assert(kind == NodeKind::Call);
+        return kids;
+    }
 };
 
 // The result of parsing one preprocessed file.

@@ -1,6 +1,5 @@
 #include "shaderlang/compiler/codegen.h"
 
-#include <cctype>
 #include <cstdio>
 
 #include "shaderlang/compiler/parser.h"
@@ -15,10 +14,6 @@ TypeSpec FloatType() {
     TypeSpec t;
     t.base = BaseType::Float;
     return t;
-}
-
-bool IsLightLoop(NodeKind k) {
-    return k == NodeKind::Illuminance || k == NodeKind::Illuminate || k == NodeKind::Solar;
 }
 
 }  // namespace
@@ -158,7 +153,7 @@ bool CodeGenerator::Generate(Node* shader, Program* program) {
     SetLoc(shader);
     // Parameters: each default is computed by its own code range, which an instance override
     // replaces (see ShaderInstance::Specialize).
-    for (Node* formal : shader->kids[0]->kids) {
+    for (Node* formal : shader->Formals()) {
         const Symbol* s = formal->symbol;
         if (!s) continue;
         int reg = NewReg(s->type, s->detail == Detail::Varying, s->name, false);
@@ -169,27 +164,17 @@ bool CodeGenerator::Generate(Node* shader, Program* program) {
         ParamCode code;
         code.reg = reg;
         code.initBegin = int(p_->code.size());
-        if (Node* init = formal->kids[0]) {
+        if (Node* init = formal->Initialiser()) {
             SetLoc(init);
-            if (init->kind == NodeKind::InitList) {
-                TypeSpec element = s->type;
-                element.arrayLength = 0;
-                for (size_t k = 0; k < init->kids.size(); ++k) {
-                    int v = ExprAs(init->kids[k], element);
-                    Emit(Op::IndexWrite, {reg, Constant(float(k)), v});
-                }
-            } else {
-                StoreTo(reg, ExprAs(init, s->type));
-            }
+            Initialise(reg, init, s->type);
         }
         code.initEnd = int(p_->code.size());
         if (int(p_->params.size()) <= s->param) p_->params.resize(size_t(s->param) + 1);
         p_->params[s->param] = code;
     }
-    for (Node* s : shader->kids[1]->kids) {
-        if (s->kind == NodeKind::Block && !s->kids.empty() &&
-            s->kids[0]->kind == NodeKind::VarDecl) {
-            for (Node* d : s->kids) Declare(d, true);
+    for (Node* s : shader->Body()->Statements()) {
+        if (s->IsDeclaration()) {
+            for (Node* d : s->Statements()) Declare(d, true);
         } else {
             Statement(s);
         }
@@ -218,19 +203,22 @@ void CodeGenerator::Declare(Node* decl, bool topLevel) {
     int reg = NewReg(s->type, !declaredUniform, s->name, false);
     p_->regs[reg].fixedDetail = declaredUniform;
     if (topLevel) p_->named[s->name] = reg;
-    if (Node* init = decl->kids[0]) {
-        if (init->kind == NodeKind::InitList) {
-            TypeSpec element = s->type;
-            element.arrayLength = 0;
-            for (size_t k = 0; k < init->kids.size(); ++k) {
-                int v = ExprAs(init->kids[k], element);
-                Emit(Op::IndexWrite, {reg, Constant(float(k)), v});
-            }
-        } else {
-            StoreTo(reg, ExprAs(init, s->type));
-        }
-    }
+    if (Node* init = decl->Initialiser()) Initialise(reg, init, s->type);
     regOf_[s] = reg;  // after the initialiser, which may name an outer variable of that name
+}
+
+void CodeGenerator::Initialise(int reg, Node* init, const TypeSpec& type) {
+    if (init->kind != NodeKind::InitList) {
+        StoreTo(reg, ExprAs(init, type));
+        return;
+    }
+    TypeSpec element = type;
+    element.arrayLength = 0;
+    const std::vector<Node*>& elements = init->Elements();
+    for (size_t k = 0; k < elements.size(); ++k) {
+        int v = ExprAs(elements[k], element);
+        Emit(Op::IndexWrite, {reg, Constant(float(k)), v});
+    }
 }
 
 void CodeGenerator::Statement(Node* s) {
@@ -238,14 +226,14 @@ void CodeGenerator::Statement(Node* s) {
     SetLoc(s);
     switch (s->kind) {
         case NodeKind::Block:
-            if (!s->kids.empty() && s->kids[0]->kind == NodeKind::VarDecl) {
-                for (Node* d : s->kids) Declare(d, false);
+            if (s->IsDeclaration()) {
+                for (Node* d : s->Statements()) Declare(d, false);
             } else {
-                for (Node* k : s->kids) Statement(k);
+                for (Node* k : s->Statements()) Statement(k);
             }
             break;
         case NodeKind::ExprStmt:
-            Expr(s->kids[0]);
+            Expr(s->Expression());
             break;
         case NodeKind::If:
             If(s);
@@ -260,7 +248,7 @@ void CodeGenerator::Statement(Node* s) {
             Exit(s);
             break;
         default:
-            if (IsLightLoop(s->kind)) LightLoop(s);
+            if (s->IsLightLoop()) LightLoop(s);
             break;  // function definitions are inlined at their calls
     }
 }
@@ -275,20 +263,20 @@ int CodeGenerator::Condition(Node* e) {
 
 void CodeGenerator::If(Node* s) {
     if (!DepthAvailable(s, 2)) return;
-    int c = Condition(s->kids[0]);
+    int c = Condition(s->Condition());
     const int outer = depth_, outerRegion = region_;
     const int entry = depth_ + 1;
     p_->maxDepth = std::max(p_->maxDepth, entry + 1);
     int ifAt = Emit(Op::If, {c}, entry);
     PushRegion(c, false);
     depth_ = entry;
-    Statement(s->kids[1]);
+    Statement(s->Then());
     depth_ = outer;
-    if (s->kids[2]) {
+    if (s->Else()) {
         int elseAt = Emit(Op::Else, {c}, entry);
         p_->code[ifAt].jump = elseAt;
         depth_ = entry;
-        Statement(s->kids[2]);
+        Statement(s->Else());
         depth_ = outer;
         p_->code[elseAt].jump = int(p_->code.size());
     } else {
@@ -300,8 +288,8 @@ void CodeGenerator::If(Node* s) {
 void CodeGenerator::Loop(Node* s) {
     if (!DepthAvailable(s, 3)) return;
     const bool isFor = s->kind == NodeKind::For;
-    if (isFor && s->kids[0]) Expr(s->kids[0]);
-    Node* condNode = isFor ? s->kids[1] : s->kids[0];
+    if (isFor && s->Init()) Expr(s->Init());
+    Node* condNode = s->Condition();
     const int outer = depth_, outerRegion = region_;
     const int running = depth_ + 1;
     p_->maxDepth = std::max(p_->maxDepth, running + 2);
@@ -315,11 +303,11 @@ void CodeGenerator::Loop(Node* s) {
     int testAt = Emit(Op::LoopTest, {c}, running);
     depth_ = running + 1;
     loops_.push_back({running, region});
-    Statement(isFor ? s->kids[3] : s->kids[1]);
+    Statement(s->Body());
     loops_.pop_back();
     SetLoc(s);
     Emit(Op::LoopNext, {}, running);
-    if (isFor && s->kids[2]) Expr(s->kids[2]);
+    if (isFor && s->Step()) Expr(s->Step());
     Emit(Op::Jump, {}, 0, condStart);
     p_->code[testAt].jump = int(p_->code.size());
     depth_ = outer;
@@ -331,8 +319,8 @@ void CodeGenerator::Exit(Node* s) {
         if (functions_.empty()) return;
         // A copy: the return value may call a function, whose inlining pushes onto functions_.
         const FunctionFrame f = functions_.back();
-        if (s->kids[0] && f.result >= 0) {
-            int v = ExprAs(s->kids[0], f.type);
+        if (s->Expression() && f.result >= 0) {
+            int v = ExprAs(s->Expression(), f.type);
             Emit(Op::Assign, {f.result, v});
         }
         Emit(Op::Exit, {}, f.entry, f.region);
@@ -354,8 +342,8 @@ void CodeGenerator::Exit(Node* s) {
 
 void CodeGenerator::LightLoop(Node* s) {
     if (!DepthAvailable(s, 3)) return;
-    std::vector<Node*> args(s->kids.begin(), s->kids.end() - 1);
-    Node* body = s->kids.back();
+    const std::vector<Node*> args = s->LightLoopArguments();
+    Node* body = s->Body();
     std::vector<int> regs;
     for (Node* a : args) regs.push_back(Expr(a));
     const int outer = depth_, outerRegion = region_;
@@ -462,10 +450,11 @@ int CodeGenerator::Expr(Node* e) {
         case NodeKind::Tuple:
             return Tuple(e);
         case NodeKind::Unary: {
-            int a = Expr(e->kids[0]);
+            Node* operand = e->Operand();
+            int a = Expr(operand);
             int d = NewReg(e->type, e->varying);
             Emit(e->op == '!' ? Op::Not : Op::Neg,
-                 {d, e->op == '!' && !e->kids[0]->boolean ? Condition(e->kids[0]) : a});
+                 {d, e->op == '!' && !operand->boolean ? Condition(operand) : a});
             return d;
         }
         case NodeKind::Binary:
@@ -473,9 +462,9 @@ int CodeGenerator::Expr(Node* e) {
         case NodeKind::Assign:
             return Assign(e);
         case NodeKind::Ternary: {
-            int c = Condition(e->kids[0]);
-            int a = ExprAs(e->kids[1], e->type);
-            int b = ExprAs(e->kids[2], e->type);
+            int c = Condition(e->Condition());
+            int a = ExprAs(e->Then(), e->type);
+            int b = ExprAs(e->Else(), e->type);
             int d = NewReg(e->type, e->varying);
             Emit(Op::Select, {d, c, a, b});
             return d;
@@ -485,8 +474,8 @@ int CodeGenerator::Expr(Node* e) {
             if (e->builtin >= 0) return BuiltinCall(e);
             return Constant(0.0f);
         case NodeKind::Index: {
-            int a = Expr(e->kids[0]);
-            int i = Expr(e->kids[1]);
+            int a = Expr(e->Array());
+            int i = Expr(e->Subscript());
             int d = NewReg(e->type, e->varying);
             Emit(Op::IndexRead, {d, a, i});
             return d;
@@ -500,28 +489,29 @@ int CodeGenerator::Expr(Node* e) {
 
 int CodeGenerator::Tuple(Node* e) {
     std::vector<float> values;
-    for (Node* k : e->kids) {
+    const std::vector<Node*>& elements = e->Elements();
+    for (Node* k : elements) {
         if (k->kind != NodeKind::Number) break;
         values.push_back(k->number);
     }
-    if (values.size() == e->kids.size()) return Constant(values, e->type);
+    if (values.size() == elements.size()) return Constant(values, e->type);
     int d = NewReg(e->type, e->varying);
-    if (e->kids.size() == 3) {
-        int a = ExprAs(e->kids[0], FloatType()), b = ExprAs(e->kids[1], FloatType()),
-            c = ExprAs(e->kids[2], FloatType());
+    if (elements.size() == 3) {
+        int a = ExprAs(elements[0], FloatType()), b = ExprAs(elements[1], FloatType()),
+            c = ExprAs(elements[2], FloatType());
         Emit(Op::Triple, {d, a, b, c});
         return d;
     }
-    for (size_t k = 0; k < e->kids.size(); ++k) {
-        int v = ExprAs(e->kids[k], FloatType());
+    for (size_t k = 0; k < elements.size(); ++k) {
+        int v = ExprAs(elements[k], FloatType());
         Emit(Op::SetComp, {d, v}, int(k));
     }
     return d;
 }
 
 int CodeGenerator::Binary(Node* e) {
-    Node* an = e->kids[0];
-    Node* bn = e->kids[1];
+    Node* an = e->Lhs();
+    Node* bn = e->Rhs();
     const int op = e->op;
     if (op == kOpAnd || op == kOpOr) {
         int a = Condition(an), b = Condition(bn);
@@ -578,8 +568,8 @@ int CodeGenerator::Binary(Node* e) {
 }
 
 int CodeGenerator::Assign(Node* e) {
-    Node* target = e->kids[0];
-    Node* value = e->kids[1];
+    Node* target = e->Target();
+    Node* value = e->Value();
     auto combine = [&](int current) {
         if (e->op == '=') return ExprAs(value, target->type);
         int v = Expr(value);
@@ -592,8 +582,8 @@ int CodeGenerator::Assign(Node* e) {
         return d;
     };
     if (target->kind == NodeKind::Index) {
-        int array = Expr(target->kids[0]);
-        int index = Expr(target->kids[1]);
+        int array = Expr(target->Array());
+        int index = Expr(target->Subscript());
         int current = -1;
         if (e->op != '=') {
             current = NewReg(target->type, target->varying);
@@ -609,7 +599,7 @@ int CodeGenerator::Assign(Node* e) {
 }
 
 int CodeGenerator::Cast(Node* e) {
-    int v = ExprAs(e->kids[0], e->type);
+    int v = ExprAs(e->Operand(), e->type);
     if (e->name.empty()) return v;
     const TypeSpec& t = e->type;
     int space = StringConstant(e->name);
@@ -634,23 +624,24 @@ int CodeGenerator::BuiltinCall(Node* e) {
         int array, index, temp;
     };
     std::vector<WriteBack> writeBacks;
-    const char* sig = info.arguments;
-    for (size_t k = 0; k < e->kids.size(); ++k) {
-        Node* a = e->kids[k];
-        char code = *sig && *sig != '*' ? *sig : 0;
-        bool output = code && std::isupper(static_cast<unsigned char>(code));
-        bool array = code && sig[1] == '[';
-        if (code) sig += array ? 3 : 1;
+    const std::vector<BuiltinParameter>& params = BuiltinSignatureOf(e->builtin).parameters;
+    const std::vector<Node*>& callArgs = e->Arguments();
+    for (size_t k = 0; k < callArgs.size(); ++k) {
+        Node* a = callArgs[k];
+        // Arguments past the parameters (a trailing "*") are passed as they are.
+        const BuiltinParameter* param = k < params.size() ? &params[k] : nullptr;
+        bool output = param && param->output;
+        bool array = param && param->array;
         if (output && a->kind == NodeKind::Index) {
-            int arr = Expr(a->kids[0]), idx = Expr(a->kids[1]);
+            int arr = Expr(a->Array()), idx = Expr(a->Subscript());
             int temp = NewReg(a->type, true, "", false);
             Emit(Op::IndexRead, {temp, arr, idx});
             writeBacks.push_back({arr, idx, temp});
             args.push_back(temp);
-        } else if (output || array || !code) {
+        } else if (output || array || !param) {
             args.push_back(Expr(a));
         } else {
-            args.push_back(ExprAs(a, TypeOfCode(code)));
+            args.push_back(ExprAs(a, param->type));
         }
     }
     int result = -1;
@@ -677,18 +668,18 @@ int CodeGenerator::InlineCall(Node* e) {
         }
     }
     if (!DepthAvailable(e, 2)) return Constant(0.0f);
-    const auto& formals = f->kids[0]->kids;
+    const std::vector<Node*>& formals = f->Formals();
     struct WriteBack {
         int array, index, temp;
     };
     std::vector<WriteBack> writeBacks;
     std::vector<std::pair<const Symbol*, int>> bindings;
     for (size_t k = 0; k < formals.size(); ++k) {
-        Node* a = e->kids[k];
+        Node* a = e->Arguments()[k];
         const Symbol* formal = formals[k]->symbol;
         int reg;
         if (formals[k]->output && a->kind == NodeKind::Index) {
-            int arr = Expr(a->kids[0]), idx = Expr(a->kids[1]);
+            int arr = Expr(a->Array()), idx = Expr(a->Subscript());
             reg = NewReg(a->type, true, "", false);
             Emit(Op::IndexRead, {reg, arr, idx});
             writeBacks.push_back({arr, idx, reg});
@@ -717,7 +708,7 @@ int CodeGenerator::InlineCall(Node* e) {
     depth_ = entry;
     inlining_.push_back(f);
     functions_.push_back({entry, region, result, f->declType, loops_.size()});
-    for (Node* s : f->kids[1]->kids) Statement(s);
+    for (Node* s : f->Body()->Statements()) Statement(s);
     functions_.pop_back();
     inlining_.pop_back();
     depth_ = outer;

@@ -48,6 +48,8 @@ class CodeGenerator {
 
     void Statement(Node* s);
     void Declare(Node* decl, bool topLevel);
+    // Stores a parameter's or variable's initialiser (a value or an InitList) in `reg`.
+    void Initialise(int reg, Node* init, const TypeSpec& type);
     void If(Node* s);
     void Loop(Node* s);
     void Exit(Node* s);

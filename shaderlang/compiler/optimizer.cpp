@@ -1,7 +1,6 @@
 #include "shaderlang/compiler/optimizer.h"
 
 #include <algorithm>
-#include <cctype>
 #include <sstream>
 
 #include "shaderlang/runtime/builtin_table.h"
@@ -21,9 +20,9 @@ bool HasJumpTarget(Op op) {
            op == Op::IllumNext || op == Op::Illuminate || op == Op::Solar;
 }
 
-bool HasOutputArgs(const BuiltinInfo& info) {
-    for (const char* p = info.arguments; *p; ++p) {
-        if (std::isupper(static_cast<unsigned char>(*p))) return true;
+bool HasOutputArgs(int row) {
+    for (const BuiltinParameter& param : BuiltinSignatureOf(row).parameters) {
+        if (param.output) return true;
     }
     return false;
 }
@@ -37,16 +36,14 @@ void Operands(const Program& p, const Instr& in, std::vector<int>* reads,
     if (op == Op::Call) {
         const int* list = &p.callArgs[in.extra];
         const BuiltinInfo& info = BuiltinTable()[list[0]];
+        const std::vector<BuiltinParameter>& params = BuiltinSignatureOf(list[0]).parameters;
         if (list[2] >= 0) writes->push_back(list[2]);
-        const char* sig = info.arguments;
         for (int k = 0; k < list[1]; ++k) {
             reads->push_back(list[3 + k]);
-            char code = *sig && *sig != '*' ? *sig : 0;
-            if (code && std::isupper(static_cast<unsigned char>(code)))
-                writes->push_back(list[3 + k]);
-            if (code) sig += sig[1] == '[' ? 3 : 1;
+            const bool param = size_t(k) < params.size();
+            if (param && params[size_t(k)].output) writes->push_back(list[3 + k]);
             // An output option's variable follows its name (a string constant).
-            if (!code && k > 0 && (info.flags & kOutputOptions)) {
+            if (!param && k > 0 && (info.flags & kOutputOptions)) {
                 const Register& name = p.regs[list[3 + k - 1]];
                 if (name.isString && name.constant &&
                     IsOutputOptionName(p.constStrings[size_t(name.constOffset)]))
@@ -70,8 +67,8 @@ void Operands(const Program& p, const Instr& in, std::vector<int>* reads,
 bool Foldable(const Program& p, const Instr& in) {
     const Op op = Op(in.op);
     if (op == Op::Call) {
-        const BuiltinInfo& info = BuiltinTable()[p.callArgs[in.extra]];
-        return !(info.flags & kRunTimeOnly) && !HasOutputArgs(info) &&
+        const int row = p.callArgs[in.extra];
+        return !(BuiltinTable()[size_t(row)].flags & kRunTimeOnly) && !HasOutputArgs(row) &&
                p.callArgs[in.extra + 2] >= 0;
     }
     return (OpTable(op).flags & kOpPure) && (OpTable(op).flags & kOpWrites);
@@ -217,8 +214,9 @@ void Optimizer::RemoveDeadCode() {
                              op == Op::IndexWrite || op == Op::SpaceCast ||
                              (op == Op::Call && Foldable(p_, in));
             if (op == Op::Call) {
-                const BuiltinInfo& info = BuiltinTable()[p_.callArgs[in.extra]];
-                removable = !(info.flags & kHasSideEffects) && !HasOutputArgs(info);
+                const int row = p_.callArgs[in.extra];
+                removable =
+                    !(BuiltinTable()[size_t(row)].flags & kHasSideEffects) && !HasOutputArgs(row);
             }
             if (!removable) continue;
             Operands(p_, in, &reads, &writes);

@@ -1,34 +1,11 @@
 #include "shaderlang/compiler/typecheck.h"
 
-#include <cctype>
 #include <cmath>
 
 #include "shaderlang/compiler/parser.h"
-#include "shaderlang/runtime/builtin_table.h"
 #include "shaderlang/runtime/global_vars.h"
 
 namespace gonio::sl {
-
-TypeSpec TypeOfCode(char code) {
-    switch (std::tolower(static_cast<unsigned char>(code))) {
-        case 'f':
-            return MakeType(BaseType::Float);
-        case 's':
-            return MakeType(BaseType::String);
-        case 'c':
-            return MakeType(BaseType::Color);
-        case 'p':
-            return MakeType(BaseType::Point);
-        case 'v':
-            return MakeType(BaseType::Vector);
-        case 'n':
-            return MakeType(BaseType::Normal);
-        case 'm':
-            return MakeType(BaseType::Matrix);
-        default:
-            return MakeType(BaseType::Void);
-    }
-}
 
 TypeChecker::TypeChecker(SyntaxTree& tree, Diagnostics& diagnostics, int colorComponents)
     : tree_(tree), diagnostics_(diagnostics), colorComponents_(colorComponents) {}
@@ -61,7 +38,7 @@ bool TypeChecker::Coerce(Node* value, const TypeSpec& to, const std::string& wha
     if (!NotBoolean(value)) return false;
     bool tuple = value->kind == NodeKind::Tuple;
     if (tuple && to.IsTriple()) {
-        int count = int(value->kids.size());
+        int count = int(value->Elements().size());
         int want = to.base == BaseType::Color ? colorComponents_ : 3;
         if (count != want) {
             Error(value, what + ": a " + ToString(to) + " has " + std::to_string(want) +
@@ -144,7 +121,7 @@ void TypeChecker::CheckFunctionDef(Node* f, Context outer) {
     ctx.functionDepth = outer.functionDepth + 1;
     if (outer.function && outer.function == f) return;
     symbols_.Push();
-    for (Node* formal : f->kids[0]->kids) {
+    for (Node* formal : f->Formals()) {
         Symbol* s = symbols_.Make();
         s->name = formal->name;
         s->kind = SymbolKind::Formal;
@@ -155,25 +132,25 @@ void TypeChecker::CheckFunctionDef(Node* f, Context outer) {
         s->decl = formal;
         s->functionDepth = ctx.functionDepth;
         formal->symbol = s;
-        if (formal->kids[0]) Error(formal, "function parameters cannot have default values");
+        if (formal->Initialiser()) Error(formal, "function parameters cannot have default values");
         if (!symbols_.Declare(s))
             Error(formal, "parameter '" + formal->name + "' is declared twice");
     }
-    CheckBlock(f->kids[1], ctx, false);
+    CheckBlock(f->Body(), ctx, false);
     symbols_.Pop();
 }
 
 void TypeChecker::CheckShader(Node* shader) {
     Context ctx;
     symbols_.Push();
-    for (Node* formal : shader->kids[0]->kids) {
+    for (Node* formal : shader->Formals()) {
         if (!formal->hasDetail) formal->detail = Detail::Uniform;
-        if (!formal->kids[0]) {
+        if (!formal->Initialiser()) {
             Error(formal, "shader parameter '" + formal->name + "' needs a default value");
         }
         CheckDeclaration(formal, ctx, SymbolKind::Param);
     }
-    CheckBlock(shader->kids[1], ctx, true);
+    CheckBlock(shader->Body(), ctx, true);
     symbols_.Pop();
 }
 
@@ -217,18 +194,18 @@ void TypeChecker::CheckDeclaration(Node* decl, Context& ctx, SymbolKind kind) {
     }
     decl->symbol = s;
     decl->detail = s->detail;
-    if (Node* init = decl->kids[0]) {
+    if (Node* init = decl->Initialiser()) {
         if (init->kind == NodeKind::InitList) {
             if (!decl->declType.IsArray()) {
                 Error(init, "a {...} initialiser needs an array");
-            } else if (int(init->kids.size()) != decl->declType.arrayLength) {
+            } else if (int(init->Elements().size()) != decl->declType.arrayLength) {
                 Error(init, "array '" + decl->name + "' has " +
                                 std::to_string(decl->declType.arrayLength) + " elements, the " +
-                                "initialiser " + std::to_string(init->kids.size()));
+                                "initialiser " + std::to_string(init->Elements().size()));
             }
             TypeSpec element = decl->declType;
             element.arrayLength = 0;
-            for (Node* k : init->kids) {
+            for (Node* k : init->Elements()) {
                 CheckExpr(k, ctx, &element);
                 Coerce(k, element, "in the initialiser of '" + decl->name + "'");
                 init->varying = init->varying || k->varying;
@@ -247,7 +224,7 @@ void TypeChecker::CheckDeclaration(Node* decl, Context& ctx, SymbolKind kind) {
 
 void TypeChecker::CheckBlock(Node* block, Context& ctx, bool newScope) {
     if (newScope) symbols_.Push();
-    for (Node* s : block->kids) CheckStatement(s, ctx);
+    for (Node* s : block->Statements()) CheckStatement(s, ctx);
     if (newScope) symbols_.Pop();
 }
 
@@ -263,9 +240,8 @@ void TypeChecker::CheckStatement(Node* s, Context& ctx) {
     if (!s) return;
     switch (s->kind) {
         case NodeKind::Block:
-            // A declaration statement is a Block of VarDecls in the enclosing scope.
-            if (!s->kids.empty() && s->kids[0]->kind == NodeKind::VarDecl) {
-                for (Node* d : s->kids) CheckDeclaration(d, ctx, SymbolKind::Local);
+            if (s->IsDeclaration()) {
+                for (Node* d : s->Statements()) CheckDeclaration(d, ctx, SymbolKind::Local);
             } else {
                 CheckBlock(s, ctx);
             }
@@ -275,28 +251,28 @@ void TypeChecker::CheckStatement(Node* s, Context& ctx) {
             CheckFunctionDef(s, ctx);
             break;
         case NodeKind::ExprStmt:
-            CheckExpr(s->kids[0], ctx);
+            CheckExpr(s->Expression(), ctx);
             break;
         case NodeKind::If: {
-            CheckCondition(s->kids[0], ctx);
-            int v = s->kids[0]->varying ? 1 : 0;
+            CheckCondition(s->Condition(), ctx);
+            int v = s->Condition()->varying ? 1 : 0;
             ctx.varyingConditions += v;
-            CheckStatement(s->kids[1], ctx);
-            CheckStatement(s->kids[2], ctx);
+            CheckStatement(s->Then(), ctx);
+            CheckStatement(s->Else(), ctx);
             ctx.varyingConditions -= v;
             break;
         }
         case NodeKind::While:
         case NodeKind::For: {
             bool isFor = s->kind == NodeKind::For;
-            Node* cond = isFor ? s->kids[1] : s->kids[0];
-            if (isFor && s->kids[0]) CheckExpr(s->kids[0], ctx);
+            Node* cond = s->Condition();
+            if (isFor && s->Init()) CheckExpr(s->Init(), ctx);
             if (cond) CheckCondition(cond, ctx);
             int v = cond && cond->varying ? 1 : 0;
             ctx.varyingConditions += v;
             ++ctx.loops;
-            if (isFor && s->kids[2]) CheckExpr(s->kids[2], ctx);
-            CheckStatement(isFor ? s->kids[3] : s->kids[1], ctx);
+            if (isFor && s->Step()) CheckExpr(s->Step(), ctx);
+            CheckStatement(s->Body(), ctx);
             --ctx.loops;
             ctx.varyingConditions -= v;
             break;
@@ -316,7 +292,7 @@ void TypeChecker::CheckStatement(Node* s, Context& ctx) {
                 break;
             }
             TypeSpec want = ctx.function->declType;
-            Node* value = s->kids[0];
+            Node* value = s->Expression();
             if (!value) {
                 if (want.base != BaseType::Void)
                     Error(s, "return needs a value of type " + ToString(want));
@@ -341,8 +317,8 @@ void TypeChecker::CheckStatement(Node* s, Context& ctx) {
 }
 
 void TypeChecker::CheckLightLoop(Node* s, Context& ctx) {
-    size_t argCount = s->kids.size() - 1;
-    std::vector<Node*> args(s->kids.begin(), s->kids.end() - 1);
+    const std::vector<Node*> args = s->LightLoopArguments();
+    const size_t argCount = args.size();
     for (Node* a : args) CheckExpr(a, ctx);
     auto expect = [&](size_t i, BaseType base, const char* what) {
         if (i < args.size() && !args[i]->hasError) Coerce(args[i], MakeType(base), what);
@@ -393,7 +369,7 @@ void TypeChecker::CheckLightLoop(Node* s, Context& ctx) {
     inner.varyingConditions += 1;
     inner.loops += s->kind == NodeKind::Illuminance ? 1 : 0;
     inner.inIlluminance = inner.inIlluminance || s->kind == NodeKind::Illuminance;
-    CheckStatement(s->kids.back(), inner);
+    CheckStatement(s->Body(), inner);
 }
 
 }  // namespace gonio::sl

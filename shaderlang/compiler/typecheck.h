@@ -12,8 +12,6 @@
 
 namespace gonio::sl {
 
-struct BuiltinInfo;
-
 class TypeChecker {
   public:
     TypeChecker(SyntaxTree& tree, Diagnostics& diagnostics, int colorComponents);
@@ -82,8 +80,5 @@ inline TypeSpec MakeType(BaseType base, int length = 0) {
     t.arrayLength = length;
     return t;
 }
-
-// The TypeSpec of a signature code ('f', 'c', ...); arrayLength 0.
-TypeSpec TypeOfCode(char code);
 
 }  // namespace gonio::sl

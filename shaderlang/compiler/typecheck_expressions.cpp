@@ -1,7 +1,6 @@
 // The type checker's expressions and calls (typecheck.h): identifiers, tuples, operators,
 // assignments, casts, and overload resolution of user functions and built-ins.
 
-#include <cctype>
 #include <cmath>
 
 #include "shaderlang/compiler/typecheck.h"
@@ -40,6 +39,22 @@ bool IsTexture(const std::string& name) {
     return name == "texture" || name == "environment" || name == "shadow";
 }
 
+// The cost of passing `a` for a parameter of type `want` (TypeChecker::ConversionCost), -1 when
+// it cannot be passed: an output parameter takes its own type or, by reference, another
+// point-like type.
+int ArgumentCost(const TypeSpec& want, bool output, const Node* a) {
+    int c = TypeChecker::ConversionCost(want, a->type, a->kind == NodeKind::Tuple);
+    if (output && c != 0 && !(want.IsPointLike() && a->type.IsPointLike())) return -1;
+    return c;
+}
+
+// "float, point, ...": the types of a call's arguments, for error messages.
+std::string ArgumentTypes(const std::vector<Node*>& args) {
+    std::string types;
+    for (const Node* a : args) types += (types.empty() ? "" : ", ") + ToString(a->type);
+    return types;
+}
+
 }  // namespace
 
 void TypeChecker::CheckExpr(Node* e, Context& ctx, const TypeSpec* expected) {
@@ -61,7 +76,7 @@ void TypeChecker::CheckExpr(Node* e, Context& ctx, const TypeSpec* expected) {
             e->hasError = true;
             break;
         case NodeKind::Unary: {
-            Node* a = e->kids[0];
+            Node* a = e->Operand();
             CheckExpr(a, ctx);
             e->varying = a->varying;
             e->type = a->type;
@@ -85,12 +100,12 @@ void TypeChecker::CheckExpr(Node* e, Context& ctx, const TypeSpec* expected) {
             CheckAssign(e, ctx);
             break;
         case NodeKind::Ternary: {
-            CheckCondition(e->kids[0], ctx);
-            CheckExpr(e->kids[1], ctx, expected);
-            CheckExpr(e->kids[2], ctx, expected);
-            Node* a = e->kids[1];
-            Node* b = e->kids[2];
-            e->varying = e->kids[0]->varying || a->varying || b->varying;
+            Node* a = e->Then();
+            Node* b = e->Else();
+            CheckCondition(e->Condition(), ctx);
+            CheckExpr(a, ctx, expected);
+            CheckExpr(b, ctx, expected);
+            e->varying = e->Condition()->varying || a->varying || b->varying;
             if (a->hasError || b->hasError || !NotBoolean(a) || !NotBoolean(b)) {
                 e->hasError = true;
                 break;
@@ -113,8 +128,8 @@ void TypeChecker::CheckExpr(Node* e, Context& ctx, const TypeSpec* expected) {
             CheckCall(e, ctx, expected);
             break;
         case NodeKind::Index: {
-            Node* array = e->kids[0];
-            Node* index = e->kids[1];
+            Node* array = e->Array();
+            Node* index = e->Subscript();
             CheckExpr(array, ctx);
             CheckExpr(index, ctx);
             e->varying = array->varying || index->varying;
@@ -176,7 +191,7 @@ void TypeChecker::CheckIdentifier(Node* e, Context& ctx) {
 }
 
 void TypeChecker::CheckTuple(Node* e, Context& ctx, const TypeSpec* expected) {
-    for (Node* k : e->kids) {
+    for (Node* k : e->Elements()) {
         CheckExpr(k, ctx);
         e->varying = e->varying || k->varying;
         if (k->hasError) {
@@ -187,7 +202,7 @@ void TypeChecker::CheckTuple(Node* e, Context& ctx, const TypeSpec* expected) {
             e->hasError = true;
         }
     }
-    int count = int(e->kids.size());
+    int count = int(e->Elements().size());
     if (expected && expected->IsTriple() && !expected->IsArray() &&
         count == (expected->base == BaseType::Color ? colorComponents_ : 3)) {
         e->type = *expected;
@@ -206,8 +221,8 @@ void TypeChecker::CheckTuple(Node* e, Context& ctx, const TypeSpec* expected) {
 }
 
 void TypeChecker::CheckBinary(Node* e, Context& ctx) {
-    Node* a = e->kids[0];
-    Node* b = e->kids[1];
+    Node* a = e->Lhs();
+    Node* b = e->Rhs();
     CheckExpr(a, ctx);
     CheckExpr(b, ctx);
     e->varying = a->varying || b->varying;
@@ -297,7 +312,7 @@ void TypeChecker::CheckBinary(Node* e, Context& ctx) {
 }
 
 bool TypeChecker::CheckLvalue(Node* target, Context& ctx, bool varyingValue) {
-    Node* var = target->kind == NodeKind::Index ? target->kids[0] : target;
+    Node* var = target->kind == NodeKind::Index ? target->Array() : target;
     if (var->kind != NodeKind::Identifier) {
         Error(target, "can only assign to a variable or an array element");
         return false;
@@ -331,8 +346,8 @@ bool TypeChecker::CheckLvalue(Node* target, Context& ctx, bool varyingValue) {
 }
 
 void TypeChecker::CheckAssign(Node* e, Context& ctx) {
-    Node* target = e->kids[0];
-    Node* value = e->kids[1];
+    Node* target = e->Target();
+    Node* value = e->Value();
     CheckExpr(target, ctx);
     CheckExpr(value, ctx, &target->type);
     e->type = target->type;
@@ -371,7 +386,7 @@ void TypeChecker::CheckAssign(Node* e, Context& ctx) {
 }
 
 void TypeChecker::CheckCast(Node* e, Context& ctx) {
-    Node* operand = e->kids[0];
+    Node* operand = e->Operand();
     const TypeSpec to = e->declType;
     CheckExpr(operand, ctx, &to);
     e->type = to;
@@ -405,19 +420,20 @@ void TypeChecker::CheckCast(Node* e, Context& ctx) {
 
 void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
     // texture("name"[channel], ...): the [channel] after the name selects the first channel.
-    if (IsTexture(e->name) && !e->kids.empty() && e->kids[0]->kind == NodeKind::Index) {
-        Node* index = e->kids[0];
-        CheckExpr(index->kids[0], ctx);
-        if (index->kids[0]->type == MakeType(BaseType::String)) {
+    std::vector<Node*>& args = e->Arguments();
+    if (IsTexture(e->name) && !args.empty() && args[0]->kind == NodeKind::Index) {
+        Node* index = args[0];
+        CheckExpr(index->Array(), ctx);
+        if (index->Array()->type == MakeType(BaseType::String)) {
             Node* option = tree_.Make(NodeKind::String, index->loc);
             option->name = "firstchannel";
-            e->kids[0] = index->kids[0];
-            e->kids.push_back(option);
-            e->kids.push_back(index->kids[1]);
+            args[0] = index->Array();
+            args.push_back(option);
+            args.push_back(index->Subscript());
         }
     }
     bool hasError = false;
-    for (Node* a : e->kids) {
+    for (Node* a : args) {
         CheckExpr(a, ctx);
         hasError = hasError || a->hasError;
         e->varying = e->varying || a->varying;
@@ -426,7 +442,7 @@ void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
         e->hasError = true;
         return;
     }
-    for (Node* a : e->kids) {
+    for (Node* a : args) {
         if (!NotBoolean(a)) {
             e->hasError = true;
             return;
@@ -436,9 +452,9 @@ void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
     if (!functions.empty()) {
         if (CheckUserCall(e, functions)) {
             if (e->hasError) return;
-            for (size_t i = 0; i < e->kids.size(); ++i) {
-                Node* formal = e->function->kids[0]->kids[i];
-                if (formal->output) CheckLvalue(e->kids[i], ctx, e->varying);
+            for (size_t i = 0; i < args.size(); ++i) {
+                Node* formal = e->function->Formals()[i];
+                if (formal->output) CheckLvalue(args[i], ctx, e->varying);
             }
             return;
         }
@@ -447,19 +463,15 @@ void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
 }
 
 bool TypeChecker::CheckUserCall(Node* e, const std::vector<Node*>& candidates) {
+    const std::vector<Node*>& args = e->Arguments();
     Node* best = nullptr;
     int bestCost = 1 << 30;
     for (Node* f : candidates) {
-        const auto& formals = f->kids[0]->kids;
-        if (formals.size() != e->kids.size()) continue;
+        const std::vector<Node*>& formals = f->Formals();
+        if (formals.size() != args.size()) continue;
         int cost = 0;
         for (size_t i = 0; i < formals.size() && cost >= 0; ++i) {
-            Node* a = e->kids[i];
-            int c = ConversionCost(formals[i]->declType, a->type, a->kind == NodeKind::Tuple);
-            if (formals[i]->output && c != 0 &&
-                !(formals[i]->declType.IsPointLike() && a->type.IsPointLike())) {
-                c = -1;
-            }
+            int c = ArgumentCost(formals[i]->declType, formals[i]->output, args[i]);
             cost = c < 0 ? -1 : cost + c;
         }
         if (cost >= 0 && cost < bestCost) {
@@ -469,19 +481,15 @@ bool TypeChecker::CheckUserCall(Node* e, const std::vector<Node*>& candidates) {
     }
     if (!best) {
         // Fall back to the built-ins of the same name before reporting.
-        for (const BuiltinInfo& b : BuiltinTable()) {
-            if (e->name == b.name) return false;
-        }
-        std::string types;
-        for (Node* a : e->kids) types += (types.empty() ? "" : ", ") + ToString(a->type);
-        Error(e, "no version of function '" + e->name + "' takes (" + types + ")");
+        if (!BuiltinRowsNamed(e->name).empty()) return false;
+        Error(e, "no version of function '" + e->name + "' takes (" + ArgumentTypes(args) + ")");
         e->hasError = true;
         return true;
     }
     e->function = best;
     e->type = best->declType;
-    for (size_t i = 0; i < e->kids.size(); ++i) {
-        Coerce(e->kids[i], best->kids[0]->kids[i]->declType, "in the call of '" + e->name + "'");
+    for (size_t i = 0; i < args.size(); ++i) {
+        Coerce(args[i], best->Formals()[i]->declType, "in the call of '" + e->name + "'");
     }
     e->varying =
         e->varying || best->varying || (best->hasDetail && best->detail == Detail::Varying);
@@ -490,114 +498,84 @@ bool TypeChecker::CheckUserCall(Node* e, const std::vector<Node*>& candidates) {
 }
 
 bool TypeChecker::CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expected) {
-    const std::vector<BuiltinInfo>& table = BuiltinTable();
-    int best = -1;
-    int bestCost = 1 << 30;
-    bool known = false;
-    for (size_t row = 0; row < table.size(); ++row) {
-        const BuiltinInfo& info = table[row];
-        if (e->name != info.name) continue;
-        known = true;
-        const char* sig = info.arguments;
-        int cost = 0;
-        size_t arg = 0;
-        bool varargs = false;
-        for (const char* p = sig; *p && cost >= 0; ++p) {
-            if (*p == '*') {
-                varargs = true;
-                break;
-            }
-            bool array = p[1] == '[' && p[2] == ']';
-            if (arg >= e->kids.size()) {
-                cost = -1;
-                break;
-            }
-            Node* a = e->kids[arg++];
-            TypeSpec want = TypeOfCode(*p);
-            bool output = std::isupper(static_cast<unsigned char>(*p));
-            if (array) {
-                p += 2;
-                if (!a->type.IsArray() || a->type.base != want.base) cost = -1;
-                continue;
-            }
-            int c = ConversionCost(want, a->type, a->kind == NodeKind::Tuple);
-            if (output && c != 0 && !(want.IsPointLike() && a->type.IsPointLike())) c = -1;
-            if (c < 0) {
-                cost = -1;
-            } else {
-                cost += c * 4;
-            }
-        }
-        if (cost < 0 || (!varargs && arg != e->kids.size())) continue;
-        TypeSpec result = TypeOfCode(info.returnType[0]);
-        if (expected && expected->base != BaseType::Void) {
-            if (result.base != expected->base) {
-                cost += ConversionCost(*expected, result, false) >= 0 ? 1 : 2;
-            }
-        }
-        if (cost < bestCost) {
-            bestCost = cost;
-            best = int(row);
-        }
-    }
-    if (!known) {
+    const std::vector<Node*>& args = e->Arguments();
+    const std::vector<int>& rows = BuiltinRowsNamed(e->name);
+    if (rows.empty()) {
         Error(e, "unknown function '" + e->name + "'");
         return false;
     }
-    if (best < 0) {
-        std::string types, candidates;
-        for (Node* a : e->kids) types += (types.empty() ? "" : ", ") + ToString(a->type);
-        int shown = 0;
-        for (const BuiltinInfo& info : table) {
-            if (e->name != info.name || shown++ >= 4) continue;
-            std::string args;
-            for (const char* p = info.arguments; *p; ++p) {
-                if (*p == '*') {
-                    args += std::string(args.empty() ? "" : ", ") + "...";
-                    continue;
-                }
-                std::string t = ToString(TypeOfCode(*p).base);
-                if (std::isupper(static_cast<unsigned char>(*p))) t = "output " + t;
-                if (p[1] == '[') {
-                    t += "[]";
-                    p += 2;
-                }
-                args += (args.empty() ? "" : ", ") + t;
-            }
-            candidates += std::string(candidates.empty() ? "" : "; ") + e->name + "(" + args + ")";
+    int best = -1;
+    int bestCost = 1 << 30;
+    for (int row : rows) {
+        const BuiltinSignature& sig = BuiltinSignatureOf(row);
+        const std::vector<BuiltinParameter>& params = sig.parameters;
+        if (params.size() > args.size() || (!sig.varargs && params.size() != args.size())) {
+            continue;
         }
-        Error(e, "no version of '" + e->name + "' takes (" + types + "); it takes " + candidates +
-                     (shown > 4 ? " ..." : ""));
+        int cost = 0;
+        for (size_t i = 0; i < params.size() && cost >= 0; ++i) {
+            const BuiltinParameter& param = params[i];
+            const Node* a = args[i];
+            if (param.array) {
+                if (!a->type.IsArray() || a->type.base != param.type.base) cost = -1;
+                continue;
+            }
+            int c = ArgumentCost(param.type, param.output, a);
+            cost = c < 0 ? -1 : cost + c * 4;
+        }
+        if (cost < 0) continue;
+        if (expected && expected->base != BaseType::Void && sig.result.base != expected->base) {
+            cost += ConversionCost(*expected, sig.result, false) >= 0 ? 1 : 2;
+        }
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = row;
+        }
+    }
+    if (best < 0) {
+        std::string candidates;
+        for (size_t k = 0; k < rows.size() && k < 4; ++k) {
+            const BuiltinSignature& sig = BuiltinSignatureOf(rows[k]);
+            std::string params;
+            for (const BuiltinParameter& param : sig.parameters) {
+                params += std::string(params.empty() ? "" : ", ") +
+                          (param.output ? "output " : "") + ToString(param.type.base) +
+                          (param.array ? "[]" : "");
+            }
+            if (sig.varargs) params += std::string(params.empty() ? "" : ", ") + "...";
+            candidates +=
+                std::string(candidates.empty() ? "" : "; ") + e->name + "(" + params + ")";
+        }
+        Error(e, "no version of '" + e->name + "' takes (" + ArgumentTypes(args) + "); it takes " +
+                     candidates + (rows.size() > 4 ? " ..." : ""));
         return false;
     }
-    const BuiltinInfo& info = table[best];
+    const BuiltinInfo& info = BuiltinTable()[size_t(best)];
+    const std::vector<BuiltinParameter>& params = BuiltinSignatureOf(best).parameters;
     e->builtin = best;
-    e->type = TypeOfCode(info.returnType[0]);
+    e->type = BuiltinSignatureOf(best).result;
     if (info.flags & (kVaryingResult | kReadsGlobals | kUsesLights | kNeedsDerivatives)) {
         e->varying = true;
     }
-    size_t arg = 0;
-    for (const char* p = info.arguments; *p && *p != '*'; ++p, ++arg) {
-        bool array = p[1] == '[';
-        Node* a = e->kids[arg];
-        if (std::isupper(static_cast<unsigned char>(*p))) {
-            CheckLvalue(a, ctx, e->varying);
-        } else if (!array) {
-            Coerce(a, TypeOfCode(*p),
-                   "argument " + std::to_string(arg + 1) + " of '" + e->name + "'");
+    for (size_t i = 0; i < params.size(); ++i) {
+        if (params[i].output) {
+            CheckLvalue(args[i], ctx, e->varying);
+        } else if (!params[i].array) {
+            Coerce(args[i], params[i].type,
+                   "argument " + std::to_string(i + 1) + " of '" + e->name + "'");
         }
-        if (array) p += 2;
     }
-    if (info.flags & kOutputOptions) CheckOutputOptions(e, arg, ctx);
+    if (info.flags & kOutputOptions) CheckOutputOptions(e, params.size(), ctx);
     return true;
 }
 
 // ("environmentcolor", c) among a call's options: c is a colour variable the call writes.
 void TypeChecker::CheckOutputOptions(Node* e, size_t first, Context& ctx) {
-    for (size_t a = first; a + 1 < e->kids.size(); ++a) {
-        const Node* name = e->kids[a];
+    const std::vector<Node*>& args = e->Arguments();
+    for (size_t a = first; a + 1 < args.size(); ++a) {
+        const Node* name = args[a];
         if (name->kind != NodeKind::String || !IsOutputOptionName(name->name)) continue;
-        Node* target = e->kids[a + 1];
+        Node* target = args[a + 1];
         if (target->kind != NodeKind::Identifier || target->type.base != BaseType::Color) {
             Error(target, "the value of option \"" + name->name + "\" of '" + e->name +
                               "' is a color variable it writes");

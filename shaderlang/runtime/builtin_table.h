@@ -50,4 +50,25 @@ struct BuiltinInfo {
 // Every built-in overload, in a fixed order (indices are stable within a run).
 const std::vector<BuiltinInfo>& BuiltinTable();
 
+// The TypeSpec of a signature code ('f', 'C', ...): arrayLength 0; Void for 'x'.
+TypeSpec TypeOfCode(char code);
+
+// A row's argument codes, parsed once for the compiler's overload resolution and code.
+struct BuiltinParameter {
+    TypeSpec type;        // the element type of an array parameter
+    bool output = false;  // upper-case code: the kernel writes the argument
+    bool array = false;   // "[]": an array of any length
+};
+
+struct BuiltinSignature {
+    TypeSpec result;
+    std::vector<BuiltinParameter> parameters;
+    bool varargs = false;  // a trailing "*": any further arguments
+};
+
+// The signature of BuiltinTable()[row].
+const BuiltinSignature& BuiltinSignatureOf(int row);
+// The rows of the built-in `name` in table order; empty when there is none.
+const std::vector<int>& BuiltinRowsNamed(const std::string& name);
+
 }  // namespace gonio::sl

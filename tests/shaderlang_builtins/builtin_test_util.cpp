@@ -4,40 +4,9 @@
 
 namespace gonio::sl::testing {
 
-TypeSpec TypeFromCode(const std::string& code) {
-    TypeSpec t;
-    switch (std::tolower(code[0])) {
-        case 'f':
-            t.base = BaseType::Float;
-            break;
-        case 's':
-            t.base = BaseType::String;
-            break;
-        case 'c':
-            t.base = BaseType::Color;
-            break;
-        case 'p':
-            t.base = BaseType::Point;
-            break;
-        case 'v':
-            t.base = BaseType::Vector;
-            break;
-        case 'n':
-            t.base = BaseType::Normal;
-            break;
-        case 'm':
-            t.base = BaseType::Matrix;
-            break;
-        default:
-            t.base = BaseType::Void;
-            break;
-    }
-    return t;
-}
+TypeSpec TypeFromCode(const std::string& code) { return TypeOfCode(code[0]); }
 
-int WidthOfCode(char code, int colorComponents) {
-    return TypeFromCode(std::string(1, code)).Width(colorComponents);
-}
+int WidthOfCode(char code, int colorComponents) { return TypeOfCode(code).Width(colorComponents); }
 
 const BuiltinInfo* FindRow(const std::string& name, const std::string& returnType,
                            const std::string& arguments) {
@@ -158,7 +127,7 @@ void ExpectAllVariants(const std::string& name, const std::string& returnType,
         for (int p = 0; p < n; ++p) mask[p] = p % 3 != 1;
         if (anyVarying) call.Mask(mask);
         for (int a = 0; a < argCount; ++a) {
-            TypeSpec type = TypeFromCode(std::string(1, arguments[a]));
+            TypeSpec type = TypeOfCode(arguments[a]);
             if (variant & (1 << a))
                 call.Varying(type, inputs[a]);
             else
