@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <mutex>
 
+#include "base/diagnostics.h"
+
 namespace gonio::sl {
 
 bool ShadingContext::Unavailable(const std::string& what, int channels, float* out) {
@@ -85,6 +87,12 @@ FileLoc StatementLoc(const std::string& statement, const std::string& fallbackFi
         loc.file = std::make_shared<const std::string>(fallbackFile);
     }
     return loc;
+}
+
+void ShadingContext::ShaderTimedOut(double budget) {
+    RuntimeError("shader time budget",
+                 "the shader ran longer than its time budget of " + FormatNumber(budget) +
+                     " s (Option \"limits\" \"shadertimeout\"; an endless loop?) and was stopped");
 }
 
 }  // namespace gonio::sl

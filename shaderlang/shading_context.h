@@ -221,8 +221,14 @@ class ShadingContext {
     // Reports a run-time problem (division by zero, NaN, a missing texture) once per `key` and
     // shader statement; `message` without location: the context adds Statement().
     virtual void RuntimeWarning(const std::string& key, const std::string& message) = 0;
-    // The same for a problem that makes the picture wrong (a brdf() file that cannot be used):
-    // a renderer fails the frame. By default a warning, for contexts that make no picture.
+    // Seconds one run of a shader may take before it is stopped (an endless loop); 0: no limit.
+    virtual double ShaderTimeout() const { return 0; }
+    // A run was stopped after `budget` seconds: a RuntimeError at the current statement.
+    virtual void ShaderTimedOut(double budget);
+
+    // The same as RuntimeWarning for a problem that makes the picture wrong (a brdf() file that
+    // cannot be used): a renderer fails the frame. By default a warning, for contexts that make no
+    // picture.
     virtual void RuntimeError(const std::string& key, const std::string& message) {
         RuntimeWarning(key, message);
     }

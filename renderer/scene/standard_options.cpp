@@ -22,6 +22,7 @@ constexpr StandardParam kStandardParams[] = {
     {"Option", "statistics", "xmlfilename", "uniform string"},
     {"Option", "limits", "bucketsize", "uniform integer[2]"},
     {"Option", "limits", "gridsize", "uniform integer"},
+    {"Option", "limits", "shadertimeout", "uniform float"},
     {"Option", "limits", "eyesplits", "uniform integer"},
     {"Option", "limits", "texturememory", "uniform integer"},
     {"Option", "limits", "othreshold", "uniform color"},

@@ -139,6 +139,8 @@ FrameShaders::FrameShaders(const Frame& frame, Diagnostics& diagnostics)
         anyTakesDerivatives_ |= group.needs.derivatives;
     }
     traceMaxDepth_ = gonio::TraceMaxDepth(frame);
+    if (auto limits = frame.options.user.find("limits"); limits != frame.options.user.end())
+        shaderTimeout_ = std::max(0.0, double(limits->second.GetFloat("shadertimeout", 0)));
 }
 
 std::shared_ptr<sl::ShaderInstance> FrameShaders::Instance(const ShaderInstance& request,

@@ -4,6 +4,7 @@
 // primitive that uses it), and the light shaders. Built once per frame before rendering, then
 // read-only, so that all threads share it.
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <string>
@@ -53,6 +54,11 @@ class FrameShaders {
         return group.needs.derivatives || (group.needs.trace && anyTakesDerivatives_);
     }
     int TraceMaxDepth() const { return traceMaxDepth_; }  // shader_needs.h
+    // Option "limits" "shadertimeout": seconds one shader run may take (0: no limit).
+    double ShaderTimeout() const { return shaderTimeout_; }
+    // Whether a shader run of this frame has run out of time (RenderContext::ShaderTimedOut).
+    bool TimedOut() const { return timedOut_.load(std::memory_order_relaxed); }
+    void NoteTimedOut() const { timedOut_.store(true, std::memory_order_relaxed); }
     const Frame& GetFrame() const { return frame_; }
     Diagnostics& GetDiagnostics() const { return diagnostics_; }
     // Camera ("current") space from world space.
@@ -79,6 +85,8 @@ class FrameShaders {
     bool anyTakesDerivatives_ = false;
     bool allShadowsOpaque_ = true;
     int traceMaxDepth_ = kDefaultTraceMaxDepth;
+    double shaderTimeout_ = 0;
+    mutable std::atomic<bool> timedOut_{false};
     std::vector<std::string> texturePath_;
 };
 

@@ -375,6 +375,12 @@ void RenderContext::RuntimeWarning(const std::string& key, const std::string& me
     ReportRuntime(Severity::Warning, key, message);
 }
 
+void RenderContext::ShaderTimedOut(double budget) {
+    const bool first = !shaders_.TimedOut();
+    shaders_.NoteTimedOut();
+    if (first) sl::ShadingContext::ShaderTimedOut(budget);
+}
+
 void RenderContext::RuntimeError(const std::string& key, const std::string& message) {
     ReportRuntime(Severity::Error, key, message);
 }

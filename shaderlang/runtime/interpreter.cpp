@@ -77,15 +77,29 @@ void ExecState::Prepare(const Program& p, int points, int ncomps) {
     illuminated = false;
     solar = false;
     lights = nullptr;
+    deadline = std::chrono::steady_clock::time_point::max();
+    backwardJumps = 0;
+    stopped = false;
 }
 
 void ExecState::Execute(int begin, int end) {
     const Instr* code = program->code.data();
     pc = begin;
-    while (pc < end) {
+    while (pc < end && !stopped) {
         const Instr& in = code[pc++];
         kOpTable[in.op].run(*this, in);
     }
+}
+
+void ExecState::CheckBudget(const Instr& in) {
+    // The clock is read every 1024 iterations: a loop body costs far more than that check.
+    if (deadline == std::chrono::steady_clock::time_point::max() || ++backwardJumps % 1024 != 0)
+        return;
+    if (std::chrono::steady_clock::now() < deadline) return;
+    stopped = true;
+    if (!context) return;
+    context->SetStatement(&program->locations[in.loc]);
+    context->ShaderTimedOut(context->ShaderTimeout());
 }
 
 void ExecState::Warn(const Instr& in, const std::string& message) {

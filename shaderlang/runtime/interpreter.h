@@ -3,6 +3,7 @@
 // control opcodes need (lights, the lit mask). Opcode functions (ops_*.cpp) work on it; each
 // runs once per instruction per batch and loops over the points inside.
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -63,6 +64,11 @@ struct ExecState final : GlobalsView {
     bool foldMode = false;  // constant folding: no context; a warning cancels the fold
     bool warned = false;
     int pc = 0;
+    // The run's time budget (ShadingContext::ShaderTimeout), checked at loops' backward jumps;
+    // past it the run is stopped (`stopped` ends every Execute) with an error.
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    unsigned backwardJumps = 0;
+    bool stopped = false;
     // Light loops.
     const std::vector<LightResult>* lights = nullptr;
     int lightIndex = -1;
@@ -86,6 +92,8 @@ struct ExecState final : GlobalsView {
     }
     bool Active(const uint8_t* mask, int i) const { return !mask || mask[i]; }
     void Warn(const Instr& in, const std::string& message);
+    // At a loop's backward jump: stops the run once it is past its deadline.
+    void CheckBudget(const Instr& in);
 
     // Lays out registers for `program` and n points (reusing memory when unchanged).
     void Prepare(const Program& program, int n, int colorComponents);

@@ -222,7 +222,10 @@ int SetMask(ExecState& x, int to, int from, const RegRef* cond, bool negate) {
     return count;
 }
 
-void OpJump(ExecState& x, const Instr& in) { x.pc = in.jump; }
+void OpJump(ExecState& x, const Instr& in) {
+    if (in.jump < x.pc) x.CheckBudget(in);  // a loop's back edge
+    x.pc = in.jump;
+}
 
 void OpIf(ExecState& x, const Instr& in) {
     RegRef c = x.Reg(in.args[0]);

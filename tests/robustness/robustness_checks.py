@@ -89,6 +89,10 @@ def brdf_scene(grid):
         "WorldBegin\n", f'WorldBegin\nLightSource "distantlight" 1\nSurface "b" "string g" "{grid}"\n')
 
 
+ENDLESS_SHADER = "surface endless(float k = 1) { float i = 0; while (k > 0) i += 1; Ci = i; }\n"
+ENDLESS_SCENE = scene("s.tif", 'Option "limits" "float shadertimeout" [0.5]\n').replace(
+    "WorldBegin\n", 'WorldBegin\nSurface "endless"\n')
+
 # (name, arguments after gonio, files {name: text or bytes}, stdin file, exit status,
 #  message piece, files that must not exist). Every file a case is given must be unchanged after.
 CASES = [
@@ -179,6 +183,10 @@ CASES = [
     ("pm_energy_huge", ["brdf", "info", "x.pm"],
      {"x.pm": photon_map("0.5 0 0.5 1 0.159 -1e30 0.5 0.5")}, None,
      1, "x.pm:2: expected energies within ±1e6", []),
+    # An endless loop is stopped by the time budget (every later run at once), the frame fails.
+    ("shader_endless_loop", ["render", "s.rib"],
+     {"s.rib": ENDLESS_SCENE, "endless.sl": ENDLESS_SHADER}, None,
+     1, "endless.sl:1: error: the shader ran longer than its time budget of 0.5 s", ["s.tif"]),
     # brdf() with a file it cannot use fails the render; no picture shaded black is written.
     ("brdf_missing_grd", ["render", "s.rib"],
      {"s.rib": brdf_scene("missing.grd"), "b.sl": BRDF_SHADER}, None,
