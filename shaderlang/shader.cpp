@@ -5,6 +5,7 @@
 #include "shaderlang/compiler/optimizer.h"
 #include "shaderlang/compiler/parser.h"
 #include "shaderlang/compiler/preprocessor.h"
+#include "shaderlang/compiler/tree_depth.h"
 #include "shaderlang/compiler/typecheck.h"
 #include "shaderlang/runtime/global_vars.h"
 #include "shaderlang/runtime/interpreter.h"
@@ -48,7 +49,7 @@ std::shared_ptr<const Shader> CompileShaderSource(const std::string& source,
     bool ok = Preprocess(source, fileName, pp, &text, diagnostics);
     SyntaxTree tree;
     ok = ParseShader(text, fileName, &tree, diagnostics) && ok;
-    if (!ok) return nullptr;
+    if (!ok || !CheckTreeDepth(tree, diagnostics)) return nullptr;
     TypeChecker checker(tree, diagnostics, options.colorComponents);
     Node* definition = checker.Check();
     if (!definition || checker.Errors() > 0) return nullptr;

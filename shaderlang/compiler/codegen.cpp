@@ -112,6 +112,13 @@ void CodeGenerator::SetLoc(const Node* n) {
 }
 
 int CodeGenerator::Emit(Op op, std::initializer_list<int> args, int extra, int jump) {
+    if (p_->code.size() == kMaxInstructions && ok_) {
+        diagnostics_.Error(ToFileLoc(tree_, current_ ? current_->loc : SourceLoc{}),
+                           "the shader is larger than " + std::to_string(kMaxInstructions) +
+                               " instructions once its functions are inlined (functions that "
+                               "call others several times, nested?)");
+        ok_ = false;
+    }
     Instr in;
     in.op = uint16_t(op);
     in.depth = uint8_t(depth_);
@@ -658,6 +665,8 @@ int CodeGenerator::BuiltinCall(Node* e) {
 }
 
 int CodeGenerator::InlineCall(Node* e) {
+    if (!ok_) return Constant(0.0f);  // too large already: stop inlining
+    current_ = e;
     const Node* f = e->function;
     for (const Node* active : inlining_) {
         if (active == f) {

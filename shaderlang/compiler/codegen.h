@@ -76,6 +76,10 @@ class CodeGenerator {
     int region_ = 0;
     int loc_ = 0;
     bool ok_ = true;
+    // Every function call is inlined, so nested calls can multiply the code: past this many
+    // instructions generation stops with an error (a real shader has a few thousand).
+    static constexpr size_t kMaxInstructions = size_t(1) << 18;
+    const Node* current_ = nullptr;  // the call being inlined, for that error
     std::unordered_map<const Symbol*, int> regOf_;
     std::vector<LoopFrame> loops_;
     std::vector<FunctionFrame> functions_;

@@ -89,6 +89,11 @@ def brdf_scene(grid):
         "WorldBegin\n", f'WorldBegin\nLightSource "distantlight" 1\nSurface "b" "string g" "{grid}"\n')
 
 
+LONG_SUM_SHADER = "surface long() { Ci = " + " + ".join(["u"] * 20000) + "; }\n"
+# f26 inlines f25 twice, ... : 2^26 copies of f0 once inlined.
+DOUBLING_SHADER = "float f0(float x) { return x; }\n" + "".join(
+    f"float f{i}(float x) {{ return f{i - 1}(x) + f{i - 1}(x); }}\n" for i in range(1, 27)
+) + "surface doubling() { Ci = f26(u); }\n"
 ENDLESS_SHADER = "surface endless(float k = 1) { float i = 0; while (k > 0) i += 1; Ci = i; }\n"
 ENDLESS_SCENE = scene("s.tif", 'Option "limits" "float shadertimeout" [0.5]\n').replace(
     "WorldBegin\n", 'WorldBegin\nSurface "endless"\n')
@@ -183,6 +188,13 @@ CASES = [
     ("pm_energy_huge", ["brdf", "info", "x.pm"],
      {"x.pm": photon_map("0.5 0 0.5 1 0.159 -1e30 0.5 0.5")}, None,
      1, "x.pm:2: expected energies within ±1e6", []),
+    # A 20,000-term sum overflowed the type checker's stack (exit 139).
+    ("shader_long_sum", ["shader", "long.sl"], {"long.sl": LONG_SUM_SHADER}, None,
+     1, "error: expressions or statements nested more than 500 deep", []),
+    # Functions that call the next one twice, 26 deep, inlined for ever.
+    ("shader_inline_blowup", ["shader", "doubling.sl"], {"doubling.sl": DOUBLING_SHADER}, None,
+     1, "error: the shader is larger than 262144 instructions once its functions are inlined",
+     []),
     # An endless loop is stopped by the time budget (every later run at once), the frame fails.
     ("shader_endless_loop", ["render", "s.rib"],
      {"s.rib": ENDLESS_SCENE, "endless.sl": ENDLESS_SHADER}, None,
