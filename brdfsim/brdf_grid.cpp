@@ -12,6 +12,18 @@ namespace gonio {
 
 namespace {
 
+// f(ω'→ω): the splats the tree finds for the pair, summed in double (on the stack for up to 16
+// components), 0 below the horizon.
+void SumSplats(const SplatSet& splats, const SplatTree& tree, const Imath::V3f& wIn,
+               const Imath::V3f& wOut, float* f) {
+    const int n = splats.NumComponents();
+    double acc[16] = {0};
+    std::vector<double> wide(n > 16 ? n : 0, 0.0);
+    double* sum = n > 16 ? wide.data() : acc;
+    if (wIn.z > 0 && wOut.z > 0) tree.Accumulate(splats.MakeQuery(wIn, wOut), sum);
+    for (int c = 0; c < n; ++c) f[c] = static_cast<float>(sum[c]);
+}
+
 // Cell tests get a little slack so that float rounding in a lookup never misses a splat.
 double SlackRadius(double radius) { return radius * (1 + 1e-5) + 1e-6; }
 
@@ -81,12 +93,7 @@ BrdfGrid::BrdfGrid(std::shared_ptr<const SplatSet> splats, int rings, int rects,
     : splats_(std::move(splats)), grid_(rings, rects), lists_(std::move(lists)), tree_(*splats_) {}
 
 void BrdfGrid::Eval(const Imath::V3f& wIn, const Imath::V3f& wOut, float* f) const {
-    const int n = splats_->NumComponents();
-    double acc[16] = {0};
-    std::vector<double> wide(n > 16 ? n : 0, 0.0);
-    double* sum = n > 16 ? wide.data() : acc;
-    if (wIn.z > 0 && wOut.z > 0) tree_.Accumulate(splats_->MakeQuery(wIn, wOut), sum);
-    for (int c = 0; c < n; ++c) f[c] = static_cast<float>(sum[c]);
+    SumSplats(*splats_, tree_, wIn, wOut, f);
 }
 
 std::size_t BrdfGrid::MemoryBytes() const {
@@ -138,12 +145,7 @@ BrdfIsoGrid::BrdfIsoGrid(std::shared_ptr<const SplatSet> splats, int rings, int 
       tree_(*splats_) {}
 
 void BrdfIsoGrid::Eval(const Imath::V3f& wIn, const Imath::V3f& wOut, float* f) const {
-    const int n = splats_->NumComponents();
-    double acc[16] = {0};
-    std::vector<double> wide(n > 16 ? n : 0, 0.0);
-    double* sum = n > 16 ? wide.data() : acc;
-    if (wIn.z > 0 && wOut.z > 0) tree_.Accumulate(splats_->MakeQuery(wIn, wOut), sum);
-    for (int c = 0; c < n; ++c) f[c] = static_cast<float>(sum[c]);
+    SumSplats(*splats_, tree_, wIn, wOut, f);
 }
 
 std::size_t BrdfIsoGrid::MemoryBytes() const {

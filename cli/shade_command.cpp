@@ -10,9 +10,9 @@
 #include <memory>
 #include <sstream>
 
-#include "base/limits.h"
 #include "commands.h"
 #include "renderer/image/image_writer.h"
+#include "shader_compile_args.h"
 #include "shaderlang/grid_shading.h"
 #include "shaderlang/shading_system.h"
 #include "shaderlang/simple_context.h"
@@ -28,9 +28,7 @@ struct ShadeOptions {
     std::string output;
     std::vector<std::string> prints;
     std::string at;
-    std::vector<std::string> includeDirs;
-    std::vector<std::string> defines;
-    int colorComponents = 3;
+    ShaderCompileArgs compile;
 };
 
 void PrintValues(const std::string& name, const sl::GridOutput& c, int width, int total,
@@ -83,14 +81,7 @@ int RunShade(const ShadeOptions& options) {
         return 2;
     }
     Diagnostics diagnostics;
-    sl::CompileOptions compile;
-    compile.includeDirs = options.includeDirs;
-    compile.colorComponents = options.colorComponents;
-    for (const std::string& d : options.defines) {
-        size_t eq = d.find('=');
-        compile.defines.emplace_back(d.substr(0, eq),
-                                     eq == std::string::npos ? "" : d.substr(eq + 1));
-    }
+    const sl::CompileOptions compile = MakeCompileOptions(options.compile);
     auto shader = sl::CompileShaderFile(options.file, compile, diagnostics);
     if (!shader) return 1;
     sl::ShaderInstance instance(shader);
@@ -190,10 +181,7 @@ void AddShadeCommand(CLI::App& app, int* exitCode) {
     cmd->add_option("-o,--output", options->output, "Write Ci (and Oi as alpha) to an image");
     cmd->add_option("--print", options->prints, "Print a global, parameter or variable");
     cmd->add_option("--at", options->at, "Print only the point X,Y");
-    cmd->add_option("-I", options->includeDirs, "Folder searched by #include");
-    cmd->add_option("-D", options->defines, "Preprocessor definition NAME[=VALUE]");
-    cmd->add_option("--ncomps", options->colorComponents, "Colour components (ColorSamples)")
-        ->check(CLI::Range(1, kMaxColorComponents));
+    AddShaderCompileOptions(cmd, &options->compile);
     cmd->callback([options, exitCode] { *exitCode = RunShade(*options); });
 }
 

@@ -6,8 +6,8 @@
 #include <memory>
 #include <sstream>
 
-#include "base/limits.h"
 #include "commands.h"
+#include "shader_compile_args.h"
 #include "shaderlang/shading_system.h"
 
 namespace gonio {
@@ -15,9 +15,7 @@ namespace {
 
 struct ShaderOptions {
     std::string file;
-    std::vector<std::string> includeDirs;
-    std::vector<std::string> defines;
-    int colorComponents = 3;
+    ShaderCompileArgs compile;
     bool code = false;
 };
 
@@ -43,15 +41,8 @@ std::string FormatDefault(const sl::ShaderParam& p) {
 
 int RunShader(const ShaderOptions& options) {
     Diagnostics diagnostics;
-    sl::CompileOptions compile;
-    compile.includeDirs = options.includeDirs;
-    compile.colorComponents = options.colorComponents;
-    for (const std::string& d : options.defines) {
-        size_t eq = d.find('=');
-        compile.defines.emplace_back(d.substr(0, eq),
-                                     eq == std::string::npos ? "" : d.substr(eq + 1));
-    }
-    auto shader = sl::CompileShaderFile(options.file, compile, diagnostics);
+    auto shader =
+        sl::CompileShaderFile(options.file, MakeCompileOptions(options.compile), diagnostics);
     if (!shader) return diagnostics.ErrorCount() > 0 && !std::ifstream(options.file) ? 2 : 1;
     std::printf("%s \"%s\"\n", sl::ToString(shader->Type()), shader->Name().c_str());
     for (const sl::ShaderParam& p : shader->Params()) {
@@ -69,10 +60,7 @@ void AddShaderCommand(CLI::App& app, int* exitCode) {
     auto options = std::make_shared<ShaderOptions>();
     CLI::App* cmd = app.add_subcommand("shader", "Check a shader and print its parameters");
     cmd->add_option("file", options->file, "Shader source (.sl)")->required();
-    cmd->add_option("-I", options->includeDirs, "Folder searched by #include");
-    cmd->add_option("-D", options->defines, "Preprocessor definition NAME[=VALUE]");
-    cmd->add_option("--ncomps", options->colorComponents, "Colour components (ColorSamples)")
-        ->check(CLI::Range(1, kMaxColorComponents));
+    AddShaderCompileOptions(cmd, &options->compile);
     cmd->add_flag("--code", options->code, "Print the compiled bytecode too");
     cmd->callback([options, exitCode] { *exitCode = RunShader(*options); });
 }

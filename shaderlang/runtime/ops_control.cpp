@@ -358,9 +358,11 @@ void OpSolar(ExecState& x, const Instr& in) {
     }
 }
 
-void OpSetComp(ExecState& x, const Instr& in) {
-    const RegRef d = x.Reg(in.args[0]), v = x.Reg(in.args[1]);
-    float* out = d.Plane(in.extra);
+namespace {
+
+// Component c of d = the float v, at the active points (once for a uniform d).
+void SetComponent(ExecState& x, const Instr& in, const RegRef& d, int c, const RegRef& v) {
+    float* out = d.Plane(c);
     const float* pv = v.Plane(0);
     if (!d.varying) {
         out[0] = pv[0];
@@ -373,22 +375,15 @@ void OpSetComp(ExecState& x, const Instr& in) {
     }
 }
 
+}  // namespace
+
+void OpSetComp(ExecState& x, const Instr& in) {
+    SetComponent(x, in, x.Reg(in.args[0]), in.extra, x.Reg(in.args[1]));
+}
+
 void OpTriple(ExecState& x, const Instr& in) {
     const RegRef d = x.Reg(in.args[0]);
-    for (int c = 0; c < 3; ++c) {
-        const RegRef v = x.Reg(in.args[1 + c]);
-        float* out = d.Plane(c);
-        const float* pv = v.Plane(0);
-        if (!d.varying) {
-            out[0] = pv[0];
-            continue;
-        }
-        const uint8_t* mask = x.Mask(in);
-        const int sv = v.Stride();
-        for (int i = 0; i < x.n; ++i) {
-            if (!mask || mask[i]) out[i] = pv[i * sv];
-        }
-    }
+    for (int c = 0; c < 3; ++c) SetComponent(x, in, d, c, x.Reg(in.args[1 + c]));
 }
 
 void OpSpaceCast(ExecState& x, const Instr& in) {
