@@ -31,6 +31,7 @@ void SceneBuilder::SetColorComponents(int n, std::vector<float> toRgb, std::vect
     state_->options.wavelengths = std::move(wavelengths);
     state_->options.colorFromSamples.clear();
     state_->options.spectraAsRgb = false;
+    state_->options.bands = state_->options.svdVectors = 0;  // ColorSamples fixes the components
     MutableAttributes().color.assign(n, 1.f);
     MutableAttributes().opacity.assign(n, 1.f);
 }
@@ -45,7 +46,6 @@ void SceneBuilder::SetColorPlan(ColorPlan plan) { state_->colorPlan = std::move(
 
 void SceneBuilder::SpectralOption(const ParamDict& params, const FileLoc& loc) {
     const std::string basis = params.GetString("basis", "sampled");
-    state_->options.bands = state_->options.svdVectors = 0;
     if (basis == "rgb") {
         SetColorComponents(3, {}, {}, {});
         state_->options.spectraAsRgb = true;

@@ -217,7 +217,8 @@ class SceneBuilder : public RiTarget {
     void CheckTransmission(const ParamDict& visibility, const FileLoc& loc);
     void SpectralAttribute(const ParamDict& params);
     bool IsSpectralColor(const Param& param) const;
-    // Sets the colour components (and their RGB matrices) and resets Color and Opacity to 1.
+    // Sets the colour components (and their RGB matrices), resets Color and Opacity to 1 and
+    // leaves no fitted representation (bands, svd): ColorSamples fixes the components.
     void SetColorComponents(int n, std::vector<float> toRgb, std::vector<float> fromRgb,
                             std::vector<double> wavelengths);
     // The same for a spectral colour space.
