@@ -122,8 +122,8 @@ struct GeometryRecord {
     std::unique_ptr<QuadricGeometry> quadric;
     RTCGeometry geometry = nullptr;  // kept for rtcInterpolate on subdivision surfaces
     int instance = -1;               // index into Impl::instances for instance geometries
-    // Subdivision surfaces: the vertex-attribute slot of each vertex/varying variable (by
-    // index into *vars), -1 for the others.
+    // Subdivision surfaces: the vertex-attribute slot of each vertex, varying or facevarying
+    // variable (by index into *vars), -1 for the others.
     std::vector<int> attributeSlot;
     // Indices into *vars of the standard variables, -1 when absent.
     int cs = -1, os = -1, st = -1, s = -1, t = -1;
@@ -257,6 +257,22 @@ RTCGeometry RayScene::Impl::MakeQuadric(GeometryRecord& record, const QuadricSha
     return g;
 }
 
+namespace {
+
+// The topology of a subdivision geometry that facevarying variables are interpolated on.
+constexpr unsigned kCornerTopology = 1;
+
+// Adds kCornerTopology: face corner k is vertex k, every vertex pinned (see MakeSubdivision).
+void AddCornerTopology(RTCGeometry g, size_t corners) {
+    rtcSetGeometryTopologyCount(g, kCornerTopology + 1);
+    auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, kCornerTopology, RTC_FORMAT_UINT, sizeof(unsigned), corners));
+    for (size_t k = 0; k < corners; ++k) index[k] = static_cast<unsigned>(k);
+    rtcSetGeometrySubdivisionMode(g, kCornerTopology, RTC_SUBDIVISION_MODE_PIN_ALL);
+}
+
+}  // namespace
+
 RTCGeometry RayScene::Impl::MakeSubdivision(GeometryRecord& record, const SubdivisionCage& cage,
                                             const M44f& m) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SUBDIVISION);
@@ -293,30 +309,43 @@ RTCGeometry RayScene::Impl::MakeSubdivision(GeometryRecord& record, const Subdiv
                                   cage.interpolateBoundary ? RTC_SUBDIVISION_MODE_PIN_CORNERS
                                                            : RTC_SUBDIVISION_MODE_NO_BOUNDARY);
     // Vertex and varying variables ride along as vertex attributes, so that rtcInterpolate
-    // evaluates them on the limit surface like P.
+    // evaluates them on the limit surface like P. Facevarying ones (one value per face corner)
+    // use a second topology in which every corner is a vertex of its own: all its vertices are
+    // then boundary corners, and pinning them all makes each face interpolate its corners
+    // bilinearly, with jumps between faces (RISpec §4.2: facevarying is interpolated like
+    // varying, but per face).
+    const size_t corners = cage.indices.size();
     record.attributeSlot.assign(cage.vars.vars.size(), -1);
     unsigned slots = 0;
+    bool faceVarying = false;
     for (size_t i = 0; i < cage.vars.vars.size(); ++i) {
         const PrimVar& var = cage.vars.vars[i];
         const bool perVertex =
-            var.decl.cls == ParamClass::Vertex || var.decl.cls == ParamClass::Varying;
-        if (!perVertex || var.components > 16 || var.ValueCount() != int(cage.positions.size()))
-            continue;
+            (var.decl.cls == ParamClass::Vertex || var.decl.cls == ParamClass::Varying) &&
+            var.ValueCount() == int(cage.positions.size());
+        const bool perCorner =
+            var.decl.cls == ParamClass::FaceVarying && size_t(var.ValueCount()) == corners;
+        if (!(perVertex || perCorner) || var.components > 16) continue;
         record.attributeSlot[i] = static_cast<int>(slots++);
+        faceVarying |= perCorner;
     }
+    if (faceVarying) AddCornerTopology(g, corners);
     rtcSetGeometryVertexAttributeCount(g, slots);
     for (size_t i = 0; i < cage.vars.vars.size(); ++i) {
         if (record.attributeSlot[i] < 0) continue;
         const PrimVar& var = cage.vars.vars[i];
+        const unsigned slot = static_cast<unsigned>(record.attributeSlot[i]);
         // Padded to a multiple of 4 floats: Embree reads attributes 4 lanes at a time.
         const size_t stride = ((var.components + 3) / 4) * 4;
         auto* dst = static_cast<float*>(
-            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, record.attributeSlot[i],
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, slot,
                                     static_cast<RTCFormat>(RTC_FORMAT_FLOAT + var.components - 1),
                                     stride * sizeof(float), var.ValueCount()));
         for (int v = 0; v < var.ValueCount(); ++v)
             for (size_t c = 0; c < stride; ++c)
                 dst[v * stride + c] = c < size_t(var.components) ? var.Value(v)[c] : 0.f;
+        if (var.decl.cls == ParamClass::FaceVarying)
+            rtcSetGeometryVertexAttributeTopology(g, slot, kCornerTopology);
     }
     rtcSetGeometryTessellationRate(g, 16.f);
     return g;

@@ -332,6 +332,32 @@ def object_instance_inherits_current_attributes(b, me):
            f"instance after Color [1 0 0] has colour {centre[:3]}")
 
 
+@check("batch")
+def facevarying_cs_on_a_subdivision_mesh(b, me):
+    """RISpec §4.2: facevarying values are interpolated like varying ones, but each face by its
+    own corner values. A flat 3x3 SubdivisionMesh (interpolateboundary) whose middle face has
+    red bottom corners and blue top ones, every other face green: the middle face's centre is
+    the mean of its corners, (0.5, 0, 0.5) by symmetry; above it blue grows, below red; a side
+    face is green."""
+    grid = " ".join(f"{x} {y} 0" for y in (-3, -1, 1, 3) for x in (-3, -1, 1, 3))
+    faces = [(i, j) for j in range(3) for i in range(3)]
+    indices = " ".join(f"{4 * j + i} {4 * j + i + 1} {4 * j + i + 5} {4 * j + i + 4}"
+                       for i, j in faces)
+    red, blue, green = "1 0 0", "0 0 1", "0 1 0"
+    colours = " ".join(f"{red} {red} {blue} {blue}" if (i, j) == (1, 1) else f"{green} " * 4
+                       for i, j in faces)
+    world = (f'SubdivisionMesh "catmull-clark" [{"4 " * 9}] [{indices}] '
+             f'["interpolateboundary"] [0 0] [] [] "P" [{grid}] "facevarying color Cs" [{colours}]')
+    b.frame(me, "a", ortho(fmt="65 65"), world)
+    yield
+    image = b.image(me, "a")
+    expect_values(image.pixels[(32, 32)][:3], [0.5, 0, 0.5], 0.02, "middle face centre")
+    above, below = image.pixels[(32, 24)], image.pixels[(32, 40)]
+    expect(above[2] > 0.55 > 0.45 > above[0] and below[0] > 0.55 > 0.45 > below[2],
+           f"middle face above/below its centre: {above[:3]} / {below[:3]}")
+    expect_values(image.pixels[(58, 32)][:3], [0, 1, 0], 1e-5, "the right face")
+
+
 TEAPOT_DATA = os.path.join(os.path.dirname(__file__), "..", "..", "data", "teapot.txt")
 
 
