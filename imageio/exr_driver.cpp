@@ -7,9 +7,13 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include <cerrno>
+#include <cstring>
 #include <exception>
+#include <fstream>
 #include <map>
 #include <vector>
 
@@ -94,9 +98,18 @@ std::string WriteExrFile(const std::string& path, const ImageFileSpec& spec,
             frame.insert(
                 spec.channelNames[c],
                 Imf::Slice(type, const_cast<char*>(base) + c * sampleBytes, xStride, yStride));
-        Imf::OutputFile file(path.c_str(), header);
-        file.setFrameBuffer(frame);
-        file.writePixels(spec.height);
+        // Our own stream, because OpenEXR's closes its file without checking: a small image on
+        // a full disk sat in the stream's buffer and was lost unnoticed.
+        std::ofstream out(path, std::ios::binary);
+        if (!out) return "could not open \"" + path + "\"";
+        {
+            Imf::StdOFStream stream(out, path.c_str());
+            Imf::OutputFile file(stream, header);
+            file.setFrameBuffer(frame);
+            file.writePixels(spec.height);
+        }
+        out.close();
+        if (!out) return "could not write \"" + path + "\": " + std::strerror(errno);
     } catch (const std::exception& e) {
         return std::string("OpenEXR: ") + e.what();
     }

@@ -9,6 +9,7 @@ must not exist afterwards.
 import argparse
 import gzip
 import os
+import shutil
 import signal
 import struct
 import subprocess
@@ -312,6 +313,7 @@ def make_small_grd(gonio, root):
         subprocess.run([gonio] + command, cwd=work, check=True, capture_output=True, timeout=60)
     SMALL_GRD["bytes"] = read_file(os.path.join(work, "l.grd"))
     SMALL_GRD["path"] = os.path.join(work, "l.grd")
+    SMALL_GRD["pm"] = os.path.join(work, "l.pm")
 
 
 def expect_grd_reads_from_a_pipe(gonio, root):
@@ -355,6 +357,105 @@ def expect_interrupt_removes_partial_files(gonio, root):
     return None
 
 
+# Writers that must fail on a full disk, each with its output name. A good file of that name
+# is there before, and must still be there, unchanged, afterwards.
+FULL_DISK_WRITERS = [
+    ("render_png", ["render", "{work}/s.rib", "-o", "out.png"]),
+    ("render_tiff", ["render", "{work}/s.rib", "-o", "out.tif"]),
+    ("render_exr", ["render", "{work}/s.rib", "-o", "out.exr"]),
+    ("shade_png", ["shade", "{work}/c.sl", "--res", "64x64", "-o", "out.png"]),
+    ("synth_pm", ["brdf", "synth", "lambert:0.5", "-n", "20000", "-o", "out.pm"]),
+    ("opt_grd", ["brdf", "opt", "4", "8", "17deg", "0", "{grd_pm}", "out.grd"]),
+    ("section_png", ["brdf", "section", "2000", "{grd}", "--theta-in", "30", "--phi-in", "0",
+                     "--phi-out", "180", "--plot", "out.png"]),
+    ("section_svg", ["brdf", "section", "2000", "{grd}", "--theta-in", "30", "--phi-in", "0",
+                     "--phi-out", "180", "--plot", "out.svg"]),
+    ("map_png", ["brdf", "map", "256", "1", "0.1", "30", "0", "{grd}", "out.png"]),
+]
+GOOD_FILE = b"a good file from an earlier run\n"
+
+
+def fill_disk(folder, free):
+    """Fills `folder`'s file system with a filler file, then frees `free` bytes of it."""
+    block = b"\0" * 4096
+    path = os.path.join(folder, "filler")
+    with open(path, "wb", buffering=0) as filler:
+        try:
+            while True:
+                filler.write(block)
+        except OSError:
+            pass
+    os.truncate(path, max(0, os.path.getsize(path) - free))
+
+
+def full_disk_case(gonio, work, disk, name, arguments):
+    """Runs one writer into the filled tmpfs `disk`; returns the reason it failed, or None."""
+    output = os.path.join(disk, arguments[-1])
+    values = {"work": work, "grd": SMALL_GRD["path"], "grd_pm": SMALL_GRD["pm"]}
+    command = [gonio] + [a.format(**values) for a in arguments]
+    result = subprocess.run(command, cwd=disk, capture_output=True, text=True, timeout=60)
+    output_text = result.stdout + result.stderr
+    if result.returncode == 0:
+        return f"{name}: exit status 0:\n{output_text}"
+    if read_file(output) != GOOD_FILE:
+        return f"{name}: the earlier {arguments[-1]} was replaced"
+    left = [f for f in os.listdir(disk) if f not in ("filler", arguments[-1])]
+    if left:
+        return f"{name}: left {', '.join(left)} behind"
+    return None
+
+
+def full_disk_inside(gonio, root):
+    """Inside a user and mount namespace (see expect_full_disk_fails_cleanly): mounts a tiny
+    tmpfs, puts a good file under each writer's output name, fills the disk and runs the
+    writer. Prints one line per writer; exits 1 when any failed, 77 when nothing could be
+    mounted."""
+    disk = os.path.join(root, "disk")
+    os.makedirs(disk)
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=256k", "tmpfs", disk]).returncode:
+        return 77
+    work = os.path.join(root, "full_disk")
+    os.makedirs(work)
+    # Outputs of 13-45 KB (noise does not compress), larger than what is left free.
+    noisy = "surface c() { Ci = noise(P * 40); }\n"
+    write_files(work, {"c.sl": noisy, "s.rib": f'Option "searchpath" "shader" "{work}:&"\n'
+                       'Format 64 64 1\nQuantize "rgba" 0 0 0 0\n'
+                       'WorldBegin\nSurface "c"\nSphere 1 -1 1 360\nWorldEnd\n'})
+    failures = 0
+    for free in (0, 8192):
+        for name, arguments in FULL_DISK_WRITERS:
+            for f in os.listdir(disk):
+                os.remove(os.path.join(disk, f))
+            with open(os.path.join(disk, arguments[-1]), "wb") as good:
+                good.write(GOOD_FILE)
+            fill_disk(disk, free)
+            reason = full_disk_case(gonio, work, disk, name, arguments)
+            what = f"{free} bytes free: {name}"
+            print(f"ok   {what}" if reason is None else f"FAIL {what}: {reason}")
+            failures += reason is not None
+    subprocess.run(["umount", disk])
+    return 1 if failures else 0
+
+
+def expect_full_disk_fails_cleanly(gonio, root):
+    """Every writer (render PNG/TIFF/EXR, shade, .pm, .grd, plots) on a full disk, and on one with
+    8 KiB free (the write fails part way), exits non-zero, leaves the earlier file of its name
+    unchanged and no temporary behind. The disk is a 256 KiB
+    tmpfs mounted in a user namespace (`unshare -rm`), so no privilege is needed where user
+    namespaces are allowed; elsewhere the check is skipped. Returns (reason or None, skipped)."""
+    if not shutil.which("unshare"):
+        return None, True
+    inside = subprocess.run(["unshare", "-rm", sys.executable, os.path.abspath(__file__),
+                             "--gonio", gonio, "--full-disk-inside", root, "--grd",
+                             SMALL_GRD["path"], "--grd-pm", SMALL_GRD["pm"]],
+                            capture_output=True, text=True, timeout=600)
+    if inside.returncode == 77 or "unshare failed" in inside.stderr:
+        return None, True
+    if inside.returncode != 0:
+        return f"\n{inside.stdout}{inside.stderr}", False
+    return None, False
+
+
 def report(name, reason):
     """Prints the outcome of one case; returns 1 when it failed."""
     print(f"ok   {name}" if reason is None else f"FAIL {name}: {reason}")
@@ -364,8 +465,14 @@ def report(name, reason):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--gonio", required=True)
+    parser.add_argument("--full-disk-inside", help=argparse.SUPPRESS)
+    parser.add_argument("--grd", help=argparse.SUPPRESS)
+    parser.add_argument("--grd-pm", help=argparse.SUPPRESS)
     args = parser.parse_args()
     gonio = os.path.abspath(args.gonio)
+    if args.full_disk_inside:
+        SMALL_GRD.update(path=args.grd, pm=args.grd_pm)
+        return full_disk_inside(gonio, args.full_disk_inside)
     with tempfile.TemporaryDirectory(prefix="gonio-robustness-") as root:
         make_small_grd(gonio, root)
         failures = sum(report(case[0], run_case(gonio, root, case)) for case in CASES)
@@ -374,7 +481,13 @@ def main():
         failures += report("source_date_epoch",
                            expect_source_date_epoch_makes_files_byte_identical(gonio, root))
         failures += report("catrib_nesting", expect_catrib_output_linear_in_nesting(gonio, root))
-    print(f"{len(CASES) + 4 - failures} of {len(CASES) + 4} cases as promised")
+        reason, skipped = expect_full_disk_fails_cleanly(gonio, root)
+        if skipped:
+            print("skip full_disk: no tmpfs can be mounted here (unshare -rm is not allowed)")
+        else:
+            failures += report("full_disk", reason)
+    checks = len(CASES) + 4 + (not skipped)
+    print(f"{checks - failures} of {checks} cases as promised")
     return 1 if failures else 0
 
 if __name__ == "__main__":
