@@ -32,6 +32,13 @@ void VertexBsdf::SplatValue(const Imath::V3f& localWi, float* f, double* pdf) co
         f[c] = splat.scale * Cs_[c] * (n == ncomps_ ? grdValues_[c] : mean);
 }
 
+void VertexBsdf::PhongValue(float specular, float* f) const {
+    const std::vector<float>& tint = material_->specularColor;
+    for (int c = 0; c < ncomps_; ++c)
+        f[c] = material_->phong.kd * Cs_[c] / kPiF +
+               specular * (tint.empty() ? 1.0f : tint[size_t(c)]);
+}
+
 double VertexBsdf::Eval(const Imath::V3f& wi, float* f) const {
     const Imath::V3f& n = frame_.n;
     if (material_->splat) {
@@ -42,9 +49,10 @@ double VertexBsdf::Eval(const Imath::V3f& wi, float* f) const {
     const MicroBrdf& phong = material_->phong;
     // MicroBrdf fixes its first direction and samples the second: here wo, then wi.
     const MicroBrdf::Value value = phong.Evaluate(n, wo_, wi);
-    const bool above = n.dot(wi) > 0;
-    for (int c = 0; c < ncomps_; ++c)
-        f[c] = above ? phong.kd * Cs_[c] / kPiF + value.specular : 0.0f;
+    if (n.dot(wi) > 0)
+        PhongValue(value.specular, f);
+    else
+        std::fill(f, f + ncomps_, 0.0f);
     return value.pdf;
 }
 
@@ -63,7 +71,7 @@ bool VertexBsdf::Sample(float u0, float u1, float u2, uint64_t seed, Imath::V3f*
     *wi = sampled.wo;
     // The specular lobe reaches below the surface at grazing angles: those samples are lost.
     if (!(frame_.n.dot(*wi) > 0) || !(sampled.value.pdf > 0)) return false;
-    for (int c = 0; c < ncomps_; ++c) f[c] = phong.kd * Cs_[c] / kPiF + sampled.value.specular;
+    PhongValue(sampled.value.specular, f);
     *pdf = sampled.value.pdf;
     return true;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // The BSDF of a path vertex, from the surface's shader (docs/path-tracing.md):
 // * the normalised Phong of the photon tracer (renderer/photon/micro_brdf.h: Kd, Ks and
-//   roughness or exponent of matte, plastic, ...), f = Kd·Cs/π + Ks·(n+2)/(2π)·cosⁿα, sampled
-//   by lobe and importance (thesis eqs. 3.16-3.17);
+//   roughness or exponent of matte, plastic, ...), f = Kd·Cs/π + Ks·S·(n+2)/(2π)·cosⁿα with S
+//   the shader's specularcolor, sampled by lobe and importance (thesis eqs. 3.16-3.17);
 // * a splat BRDF, for surfaces whose shader calls brdf("x.grd", ...): f = Kb·Cs·f_grd, sampled
 //   from the splats themselves (brdfsim/splat_sampler.h).
 // Paths start at the camera, so the direction fixed at a vertex is the one towards the viewer
@@ -42,6 +42,9 @@ struct SplatSurface {
 
 struct PathMaterial {
     MicroBrdf phong;
+    // The shader's specularcolor, which tints the Phong lobe (plastic's Ks·specularcolor):
+    // ncomps values, or empty for white.
+    std::vector<float> specularColor;
     std::shared_ptr<const SplatSurface> splat;  // null: phong
 };
 
@@ -61,6 +64,8 @@ class VertexBsdf {
 
   private:
     void SplatValue(const Imath::V3f& localWi, float* f, double* pdf) const;
+    // The Phong value for one specular lobe value, above the surface.
+    void PhongValue(float specular, float* f) const;
 
     const PathMaterial* material_ = nullptr;
     ShadingFrame frame_;

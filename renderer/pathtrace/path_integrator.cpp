@@ -6,6 +6,7 @@
 
 #include "base/hash.h"
 #include "base/math.h"
+#include "renderer/raytrace/shadow_transmission.h"
 #include "renderer/raytrace/transforms.h"
 #include "renderer/raytrace/transparent_layers.h"
 
@@ -26,6 +27,12 @@ Imath::V3f OffsetOrigin(const Imath::V3f& P, const Imath::V3f& Ng, const Imath::
     const float scale = std::max({1.0f, std::abs(P.x), std::abs(P.y), std::abs(P.z)});
     const float side = Ng.dot(dir) >= 0 ? 1.0f : -1.0f;
     return P + Ng * (side * 1e-4f * scale);
+}
+
+// A surface's opacity for paths and shadow rays: its Os (Opacity, or the "Os" primitive
+// variable), clamped to [0, 1]; its shader's Oi is not run.
+float OpacityOf(const SurfacePoint& sp, int c) {
+    return c < int(sp.Os.size()) ? std::clamp(sp.Os[size_t(c)], 0.0f, 1.0f) : 1.0f;
 }
 
 Imath::V3f AnyPerpendicular(const Imath::V3f& n) {
@@ -76,7 +83,8 @@ PathWorker::PathWorker(const PathIntegrator& integrator)
       beta_(size_t(ncomps_)),
       f_(size_t(ncomps_)),
       Ld_(size_t(ncomps_)),
-      Le_(size_t(ncomps_)) {}
+      Le_(size_t(ncomps_)),
+      T_(size_t(ncomps_)) {}
 
 bool PathWorker::NextHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
                          float time, RayHit* hit) {
@@ -126,12 +134,36 @@ ShadingFrame PathWorker::MakeFrame(const SurfacePoint& sp, const Imath::V3f& wo,
     return frame;
 }
 
-bool PathWorker::Visible(const Imath::V3f& P, const Imath::V3f& Ng, const Imath::V3f& dir,
-                         float dist, float time) {
-    ++rays_;
+bool PathWorker::Transmittance(const Imath::V3f& P, const Imath::V3f& Ng, const Imath::V3f& dir,
+                               float dist, float time, float* T) {
     const Imath::V3f org = OffsetOrigin(P, Ng, dir);
     const float tfar = std::isinf(dist) ? kInfinity : dist * (1 - 1e-4f);
-    return !c_.scene_.Occluded(org, dir, 0, tfar, time);
+    if (c_.shaders_.AllShadowsOpaque()) {
+        ++rays_;
+        const bool open = !c_.scene_.Occluded(org, dir, 0, tfar, time);
+        std::fill(T, T + ncomps_, open ? 1.0f : 0.0f);
+        return open;
+    }
+    rays_ += uint64_t(ShadowTransmission(c_.scene_, org, dir, 0, tfar, time, ncomps_, T));
+    return std::any_of(T, T + ncomps_, [](float t) { return t > 0; });
+}
+
+bool PathWorker::NextScatteringHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear,
+                                   float tfar, float time, uint64_t* state, RayHit* hit) {
+    for (int layer = 0; layer < kMaxTransparentLayers; ++layer) {
+        if (!NextHit(org, dir, tnear, tfar, time, hit)) return false;
+        float mean = 0;
+        for (int c = 0; c < ncomps_; ++c) mean += OpacityOf(sp_, c) / float(ncomps_);
+        if (mean >= 1) return true;
+        const float pass = 1 - mean;
+        if (ToUnitFloat(SplitMix64(*state)) >= pass) {
+            for (int c = 0; c < ncomps_; ++c) beta_[c] *= OpacityOf(sp_, c) / mean;
+            return true;
+        }
+        for (int c = 0; c < ncomps_; ++c) beta_[c] *= (1 - OpacityOf(sp_, c)) / pass;
+        tnear = ContinuePast(hit->t);
+    }
+    return false;
 }
 
 bool PathWorker::RunLight(int index, const Imath::V3f& Ps, const AreaLightSample* area, float time,
@@ -206,8 +238,10 @@ void PathWorker::DirectLight(const SurfacePoint& sp, const ShadingFrame& frame, 
             const double pdfLight = dist * dist / (cosLight * light.area->Area());
             weight = PowerHeuristic(pdfLight, pdfBsdf) / sample.pdfArea;
         }
-        if (!Visible(sp.P, sp.Ng, wi, result.atInfinity ? kInfinity : dist, time)) continue;
-        for (int c = 0; c < ncomps_; ++c) Ld[c] += weight * f_[c] * result.Cl[size_t(c)] * cosTheta;
+        if (!Transmittance(sp.P, sp.Ng, wi, result.atInfinity ? kInfinity : dist, time, T_.data()))
+            continue;
+        for (int c = 0; c < ncomps_; ++c)
+            Ld[c] += weight * f_[c] * T_[c] * result.Cl[size_t(c)] * cosTheta;
     }
 }
 
@@ -225,7 +259,7 @@ bool PathWorker::Radiance(const CameraRay& ray, uint64_t seed, float* L, float* 
     double fromPdf = 0;
     for (int bounce = 0;; ++bounce) {
         RayHit hit;
-        if (!NextHit(org, dir, tnear, tfar, ray.time, &hit)) break;
+        if (!NextScatteringHit(org, dir, tnear, tfar, ray.time, &state, &hit)) break;
         if (bounce == 0) {
             covered = true;
             *depth = hit.t;  // the camera ray's parameter: camera-space z (camera.h)

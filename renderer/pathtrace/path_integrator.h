@@ -83,8 +83,16 @@ class PathWorker {
     // Le_: what its shader's Cl is per unit area, times d² / cos θ at the light. False when the
     // hit is not on its emitting side.
     bool Emitted(int index, const Imath::V3f& from, float time, uint64_t seed);
-    bool Visible(const Imath::V3f& P, const Imath::V3f& Ng, const Imath::V3f& dir, float dist,
-                 float time);
+    // The fraction of light (ncomps floats into T) that reaches P along dir over dist through
+    // the surfaces in between (shadow_transmission.h); false when none does.
+    bool Transmittance(const Imath::V3f& P, const Imath::V3f& Ng, const Imath::V3f& dir, float dist,
+                       float time, float* T);
+    // The next hit the path scatters at (into sp_). Stochastic transparency: a surface of mean
+    // opacity m < 1 is passed with probability 1 − m, β multiplied by (1 − Os)/(1 − m), else
+    // kept with β·Os/m, which is unbiased; opaque surfaces draw no number. At most
+    // kMaxTransparentLayers surfaces are passed.
+    bool NextScatteringHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
+                           float time, uint64_t* state, RayHit* hit);
 
     const PathIntegrator& c_;
     int ncomps_;
@@ -92,7 +100,7 @@ class PathWorker {
     LightShaderContext lightContext_;
     VertexBsdf bsdf_;
     SurfacePoint sp_;
-    std::vector<float> beta_, f_, Ld_, Le_;
+    std::vector<float> beta_, f_, Ld_, Le_, T_;
     uint64_t rays_ = 0;
 };
 

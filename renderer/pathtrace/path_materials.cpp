@@ -5,6 +5,18 @@
 #include "shaderlang/brdf_files.h"
 
 namespace gonio {
+namespace {
+
+// The shader's "specularcolor" as ncomps values (one value stands for all), or empty when it
+// has none.
+std::vector<float> SpecularColor(const sl::ShaderInstance& surface, int ncomps) {
+    std::vector<float> color = surface.FloatParameter("specularcolor");
+    if (color.size() == 1) color.assign(size_t(ncomps), color[0]);
+    if (color.size() != size_t(ncomps)) color.clear();
+    return color;
+}
+
+}  // namespace
 
 PathMaterials::PathMaterials(const Frame& frame, const FrameShaders& shaders,
                              Diagnostics& diagnostics)
@@ -32,6 +44,7 @@ PathMaterial PathMaterials::Make(const Attributes& attributes) {
     PathMaterial material;
     if (grids.empty()) {
         material.phong = MicroBrdfFromShader(surface, attributes, diagnostics_);
+        material.specularColor = SpecularColor(surface, frame_.options.colorComponents);
         return material;
     }
     if (grids.size() > 1)

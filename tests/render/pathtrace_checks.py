@@ -44,10 +44,10 @@ def furnace(name, surface, options="", size=SIZE):
             f"{surface}\nSphere 1 -1 1 360\nWorldEnd\n")
 
 
-def mean_and_error(image):
-    """The mean of the red channel and its standard error from the spread of the pixels (each
+def mean_and_error(image, c=0):
+    """The mean of channel c (red) and its standard error from the spread of the pixels (each
     pixel averages its own independent paths)."""
-    values = image.channel(0)
+    values = image.channel(c)
     n = len(values)
     mean = sum(values) / n
     variance = sum((v - mean) ** 2 for v in values) / (n - 1)
@@ -109,25 +109,97 @@ def make_white_grid(ws):
         ws.run(["brdf", "opt", "4", "9", "0.3", "0", "white.pm", "white.grd"])
 
 
+def inside_emitter(name, surface, samples=8):
+    """A surface (Disk of radius 1 at the origin) seen orthographically along its normal from
+    inside a black sphere of radiance 1 (an arealight, radius 2), at 32 × 32 pixels."""
+    return ('Option "pathtrace" "integer enable" [1]\nFormat 32 32 1\n'
+            f'PixelSamples {samples} {samples}\nPixelFilter "box" 1 1\n'
+            'Projection "orthographic"\nScreenWindow -0.3 0.3 -0.3 0.3\n'
+            f'Quantize "rgba" 0 0 0 0\nDisplay "{name}.tif" "tiff" "rgba"\n'
+            "Translate 0 0 1.2\nRotate 180 1 0 0\nWorldBegin\n"
+            'AttributeBegin\nAreaLightSource "arealight" 1 "intensity" [1]\nReverseOrientation\n'
+            'Surface "matte" "Kd" [0] "Ka" [0]\nSphere 2 -2 2 360\nAttributeEnd\n'
+            f"{surface}\nDisk 0 1 360\nWorldEnd\n")
+
+
 def splat_plane_reflects_all_energy(ws):
     """The white furnace of the splat BRDF as a path-traced surface: a disk shaded with the
     kd = 1 grid inside a black sphere of radiance 1 (an arealight, radius 2), seen along its
     normal, shows its albedo ∫ f cos θ dω = 1 (`gonio brdf info` gives 1.0004 at 0°) within 1%,
     at 32 × 32 pixels × 64 paths of one bounce each (σ printed, below 0.25%)."""
     make_white_grid(ws)
-    rib = ('Option "pathtrace" "integer enable" [1]\nFormat 32 32 1\nPixelSamples 8 8\n'
-           'PixelFilter "box" 1 1\nProjection "orthographic"\nScreenWindow -0.3 0.3 -0.3 0.3\n'
-           'Quantize "rgba" 0 0 0 0\nDisplay "whiteplane.tif" "tiff" "rgba"\n'
-           "Translate 0 0 1.2\nRotate 180 1 0 0\nWorldBegin\n"
-           'AttributeBegin\nAreaLightSource "arealight" 1 "intensity" [1]\nReverseOrientation\n'
-           'Surface "matte" "Kd" [0] "Ka" [0]\nSphere 2 -2 2 360\nAttributeEnd\n'
-           'Surface "brdfsurface" "string grid" "white.grd"\nDisk 0 0.5 360\nWorldEnd\n')
+    rib = inside_emitter("whiteplane", 'Surface "brdfsurface" "string grid" "white.grd"')
     ws.render(rib, "whiteplane")
     (image,) = read_images(ws.path("whiteplane.tif"))
     mean, error = mean_and_error(image)
     print(f"     whiteplane: albedo {mean:.5f} ± {error:.5f}")
     expect(error < 0.0025, f"whiteplane: the noise {error:.5f} is too large")
     expect(abs(mean - 1) < 0.01, f"whiteplane: albedo {mean:.5f} ± {error:.5f}, not 1 within 1%")
+
+
+def transparent_sheet_passes_one_minus_os(ws):
+    """Stochastic transparency: a black sheet of Opacity (0.25, 0.5, 0.75) in front of a wall of
+    radiance 1 shows 1 − Os = (0.75, 0.5, 0.25). Each path passes with probability 1 − 0.5 and
+    carries (1 − Os)/0.5, so a pixel of 64 paths has σ = (1 − Os)/8 and the image mean
+    σ = (1 − Os)/256 (0.3% of red); checked within 4σ of the measured noise."""
+    ws.render(inside_emitter("sheet", 'Opacity [0.25 0.5 0.75]\nSurface "matte" "Kd" [0]'),
+              "sheet")
+    (image,) = read_images(ws.path("sheet.tif"))
+    for c, expected in enumerate((0.75, 0.5, 0.25)):
+        mean, error = mean_and_error(image, c)
+        print(f"     sheet channel {c}: {mean:.5f} ± {error:.5f} (expected {expected})")
+        expect(error < 0.005, f"sheet channel {c}: the noise {error:.5f} is too large")
+        expect(abs(mean - expected) < 4 * error + 1e-4,
+               f"sheet channel {c}: {mean:.5f} ± {error:.5f}, expected {expected}")
+
+
+def shadow_through_a_sheet_is_one_minus_os(ws):
+    """Shadow rays through a partly transparent surface: a point light 4 above a matte ground,
+    a black sheet of Opacity (0.25, 0.5, 0.75) halfway up over the half x > 0 (the camera looks
+    down from below the sheet). The light reaching the ground behind the sheet is 1 − Os of
+    what reaches the mirror-image point in front of it; nothing else lights the ground (the
+    sheet is black), so the ratio is exact: within 0.2% over the columns away from the edge."""
+    rib = ('Option "pathtrace" "integer enable" [1]\nFormat 32 32 1\nPixelSamples 2 2\n'
+           'PixelFilter "box" 1 1\nProjection "orthographic"\n'
+           'Quantize "rgba" 0 0 0 0\nDisplay "shadow.tif" "tiff" "rgba"\n'
+           "Rotate -90 1 0 0\nTranslate 0 -1 0\nWorldBegin\n"
+           'LightSource "pointlight" 1 "from" [0 4 0] "intensity" [1]\n'
+           'AttributeBegin\nOpacity [0.25 0.5 0.75]\nSurface "matte" "Kd" [0]\n'
+           'Polygon "P" [0 2 -10  10 2 -10  10 2 10  0 2 10]\nAttributeEnd\n'
+           'Surface "matte" "Kd" [1] "Ka" [0]\n'
+           'Polygon "P" [-10 0 -10  10 0 -10  10 0 10  -10 0 10]\nWorldEnd\n')
+    ws.render(rib, "shadow")
+    (image,) = read_images(ws.path("shadow.tif"))
+    lit, shaded = [0.0] * 3, [0.0] * 3
+    for (x, y), p in image.pixels.items():
+        if x < 14:  # in front of the sheet (x < 0); its mirror image 31 - x lies behind it
+            mirror = image.pixels[(31 - x, y)]
+            for c in range(3):
+                lit[c] += p[c]
+                shaded[c] += mirror[c]
+    expect(lit[0] > 0, "the ground is black")
+    # Which half of the image lies behind the sheet depends on the camera's handedness.
+    if shaded[0] > lit[0]:
+        lit, shaded = shaded, lit
+    for c, expected in enumerate((0.75, 0.5, 0.25)):
+        ratio = shaded[c] / lit[c]
+        print(f"     shadow channel {c}: behind / in front {ratio:.5f} (expected {expected})")
+        expect(abs(ratio / expected - 1) < 0.002,
+               f"shadow channel {c}: {ratio:.5f} of the light passes, expected {expected}")
+
+
+def specularcolor_tints_the_lobe(ws):
+    """plastic's specularcolor tints its Ks lobe: Kd 0, Ks 1, specularcolor (1, 0.5, 0.25) inside
+    a grey emitter, one bounce (the sphere is black, the disk cannot see itself), so every path
+    carries the tint exactly: green / red = 0.5 and blue / red = 0.25 in every pixel (1e-4)."""
+    ws.render(inside_emitter("tint", 'Surface "plastic" "Kd" [0] "Ks" [1] "Ka" [0] '
+                             '"roughness" [0.2] "specularcolor" [1 0.5 0.25]', samples=2), "tint")
+    (image,) = read_images(ws.path("tint.tif"))
+    expect(image.mean(0) > 0.1, f"the lobe reflects {image.mean(0)}")
+    for xy, p in image.pixels.items():
+        if p[0] > 0:
+            expect(abs(p[1] / p[0] - 0.5) < 1e-4 and abs(p[2] / p[0] - 0.25) < 1e-4,
+                   f"pixel {xy} is {p[:3]}: not tinted (1, 0.5, 0.25)")
 
 
 def splat_furnace(ws):
@@ -210,7 +282,9 @@ def bad_grids_are_located_errors(ws):
 
 
 CHECKS = [furnace_rho_05, furnace_rho_08, area_furnace_rho_05, area_furnace_rho_08,
-          splat_plane_reflects_all_energy, splat_furnace, same_pixels_whatever_the_threads,
+          splat_plane_reflects_all_energy, splat_furnace, transparent_sheet_passes_one_minus_os,
+          shadow_through_a_sheet_is_one_minus_os, specularcolor_tints_the_lobe,
+          same_pixels_whatever_the_threads,
           bad_grids_are_located_errors]
 
 if __name__ == "__main__":
