@@ -168,6 +168,10 @@ class ShadingContext {
     // warns once that `what` gives 0 here.
     virtual bool TraceSampledRays(const std::string& what, const SampledRays& rays,
                                   SampledHits* hits);
+    // Whether the hits of Kind::Shaded rays would be shaded here: false past the ray depth the
+    // renderer allows (Attribute "trace" "maxdiffusedepth"), where indirectdiffuse() then
+    // gives 0 without tracing its rays.
+    virtual bool ShadesSampledRays() const { return true; }
     // The points whose ray-traced results are computed: a point i >= MainPointCount() shares
     // the result of point i % MainPointCount() (a ray tracer's neighbour points, which lie a
     // pixel away, share their hit's rays as they share its lights).

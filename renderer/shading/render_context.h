@@ -103,6 +103,7 @@ class RenderContext : public sl::ShadingContext {
                           sl::SampledHits* hits) override;
     int MainPointCount() const override { return MainCount(); }
     float PixelWidth(const Imath::V3f& P) const override;
+    bool ShadesSampledRays() const override;
     bool Attribute(const std::string& name, const sl::TypeSpec& type, int point,
                    std::vector<float>* floats, std::string* text) const override;
     bool Option(const std::string& name, const sl::TypeSpec& type, std::vector<float>* floats,

@@ -38,6 +38,11 @@ float RenderContext::PixelWidth(const V3f& P) const {
     return std::isfinite(width) ? width : 0.0f;
 }
 
+bool RenderContext::ShadesSampledRays() const {
+    return depth_ + 1 <= shaders_.TraceMaxDepth() &&
+           depth_ + 1 <= TraceMaxDiffuseDepth(*batch_->attributes);
+}
+
 bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& rays,
                                      sl::SampledHits* hits) {
     using Kind = sl::SampledRays::Kind;
@@ -52,8 +57,7 @@ bool RenderContext::TraceSampledRays(const std::string&, const sl::SampledRays& 
     const M44f& currentFromWorld = shaders_.CurrentFromWorld();
     // Normals go by the inverse transpose: n_current = n_world · (worldFromCurrent)ᵀ.
     const M44f normalToCurrent = worldFromCurrent_.transposed();
-    const bool shade = rays.kind == Kind::Shaded && depth_ + 1 <= shaders_.TraceMaxDepth() &&
-                       depth_ + 1 <= TraceMaxDiffuseDepth(*batch_->attributes);
+    const bool shade = rays.kind == Kind::Shaded && ShadesSampledRays();
     const float defaultBias = TraceBias(*batch_->attributes);
     TracedRays shaded;
     shaded.time = time;

@@ -42,6 +42,8 @@ void HemisphereKernel(const BuiltinCall& call, bool shaded, const char* what) {
     ClearResult(call);
     if (!call.context) return;
     ShadingContext& context = *call.context;
+    // Past the diffuse depth an indirectdiffuse() brings nothing: its hits would not be shaded.
+    if (shaded && !context.ShadesSampledRays()) return;
     const RayOptions o = ReadRayOptions(call, 3, what);
     const int samples = SampleCount(call, call.args[2]);
     const int n = call.n, nc = call.colorComponents;

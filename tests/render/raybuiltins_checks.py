@@ -50,6 +50,7 @@ All frames go into one RIB file per thread count; images are read with one oiiot
 import argparse
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -261,6 +262,45 @@ def make_environment(folder):
                    capture_output=True)
 
 
+NESTED_SHADER = ("surface nested() { normal Nf = faceforward(normalize(N), I); "
+                 "Ci = Cs * indirectdiffuse(P, Nf, 16); }")
+NESTED_SCENE = """Format 16 16 1
+PixelSamples 1 1
+Display "nested.tif" "tiff" "rgba"
+Projection "perspective" "fov" [60]
+Translate 0 0 3
+WorldBegin
+Surface "nested"
+Sphere 1 -1 1 360
+AttributeBegin
+Translate 0 0 -3
+Sphere 5 -5 5 360
+AttributeEnd
+WorldEnd
+"""
+
+
+def nested_indirectdiffuse_stops_at_the_diffuse_depth(gonio):
+    """Every surface calls indirectdiffuse(16) and an enclosing sphere catches every ray, so
+    each camera hit traces 16 rays whose hits are shaded; at the default maxdiffusedepth 1 the
+    indirectdiffuse() of those hits brings nothing and must trace no ray: the sampled rays are
+    exactly 16 per camera ray (they were 16 + 16², the second level traced and discarded)."""
+    with tempfile.TemporaryDirectory(prefix="gonio_nested_") as folder:
+        with open(os.path.join(folder, "nested.sl"), "w") as f:
+            f.write(NESTED_SHADER + "\n")
+        with open(os.path.join(folder, "scene.rib"), "w") as f:
+            f.write(NESTED_SCENE)
+        proc = subprocess.run([gonio, "render", "--stats", "scene.rib"], cwd=folder,
+                              capture_output=True, text=True)
+    expect(proc.returncode == 0, f"the nested scene did not render:\n{proc.stderr}")
+    stats = proc.stderr
+    found = re.search(r"(\d+) camera rays, .*?(\d+) sampled", stats)
+    expect(found, f"no ray counts in --stats: {stats}")
+    camera, sampled = int(found[1]), int(found[2])
+    expect(sampled == 16 * camera,
+           f"{sampled} sampled rays for {camera} camera rays, expected {16 * camera}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--gonio", required=True)
@@ -283,10 +323,13 @@ def main():
             expect(images[1][name].pixels == images[2][name].pixels,
                    f"{name} differs between --threads 1 and --threads 2")
 
+    def nested_indirectdiffuse_past_the_depth(_):
+        nested_indirectdiffuse_stops_at_the_diffuse_depth(gonio)
+
     checks = [occlusion_matches_the_analytic_fractions, samplebase_jitters_origins_over_a_pixel,
               indirectdiffuse_is_irradiance_over_pi, gather_counts_lengths_and_colours,
               an_ambient_light_runs_at_the_surface_points, visibility_and_transmission,
-              same_with_one_and_two_threads]
+              same_with_one_and_two_threads, nested_indirectdiffuse_past_the_depth]
     return run_checks(checks, images[2])
 
 
