@@ -86,17 +86,6 @@ PathWorker::PathWorker(const PathIntegrator& integrator)
       Le_(size_t(ncomps_)),
       T_(size_t(ncomps_)) {}
 
-bool PathWorker::NextHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
-                         float time, RayHit* hit) {
-    while (true) {
-        ++rays_;
-        if (!c_.scene_.Intersect(org, dir, tnear, tfar, time, hit)) return false;
-        c_.scene_.Evaluate(org, dir, *hit, &sp_);
-        if (sp_.attributes->twoSided || sp_.Ng.dot(dir) <= 0) return true;
-        tnear = ContinuePast(hit->t);
-    }
-}
-
 ShadingFrame PathWorker::MakeFrame(const SurfacePoint& sp, const Imath::V3f& wo,
                                    const PathMaterial& material) const {
     ShadingFrame frame;
@@ -149,9 +138,9 @@ bool PathWorker::Transmittance(const Imath::V3f& P, const Imath::V3f& Ng, const 
 }
 
 bool PathWorker::NextScatteringHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear,
-                                   float tfar, float time, uint64_t* state, RayHit* hit) {
+                                   float tfar, float time, uint64_t* state, float* t) {
     for (int layer = 0; layer < kMaxTransparentLayers; ++layer) {
-        if (!NextHit(org, dir, tnear, tfar, time, hit)) return false;
+        if (!NextVisibleHit(c_.scene_, org, dir, time, tfar, &tnear, &sp_, t, &rays_)) return false;
         float mean = 0;
         for (int c = 0; c < ncomps_; ++c) mean += OpacityOf(sp_, c) / float(ncomps_);
         if (mean >= 1) return true;
@@ -161,7 +150,6 @@ bool PathWorker::NextScatteringHit(const Imath::V3f& org, const Imath::V3f& dir,
             return true;
         }
         for (int c = 0; c < ncomps_; ++c) beta_[c] *= (1 - OpacityOf(sp_, c)) / pass;
-        tnear = ContinuePast(hit->t);
     }
     return false;
 }
@@ -258,11 +246,11 @@ bool PathWorker::Radiance(const CameraRay& ray, uint64_t seed, float* L, float* 
     const Attributes* fromAttributes = nullptr;
     double fromPdf = 0;
     for (int bounce = 0;; ++bounce) {
-        RayHit hit;
-        if (!NextScatteringHit(org, dir, tnear, tfar, ray.time, &state, &hit)) break;
+        float t = 0;
+        if (!NextScatteringHit(org, dir, tnear, tfar, ray.time, &state, &t)) break;
         if (bounce == 0) {
             covered = true;
-            *depth = hit.t;  // the camera ray's parameter: camera-space z (camera.h)
+            *depth = t;  // the camera ray's parameter: camera-space z (camera.h)
         }
         auto emitter = c_.emitters_.find(sp_.shape);
         if (emitter != c_.emitters_.end() && Emitted(emitter->second, from, ray.time, next())) {

@@ -66,9 +66,6 @@ class PathWorker {
     uint64_t RaysTraced() const { return rays_; }
 
   private:
-    // The next hit along the ray that is seen (one-sided surfaces are seen from the front).
-    bool NextHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar, float time,
-                 RayHit* hit);
     ShadingFrame MakeFrame(const SurfacePoint& sp, const Imath::V3f& wo,
                            const PathMaterial& material) const;
     // Σ over the point's lights of f · Cl · cos θ, shadowed, area lights weighed by MIS
@@ -87,12 +84,13 @@ class PathWorker {
     // the surfaces in between (shadow_transmission.h); false when none does.
     bool Transmittance(const Imath::V3f& P, const Imath::V3f& Ng, const Imath::V3f& dir, float dist,
                        float time, float* T);
-    // The next hit the path scatters at (into sp_). Stochastic transparency: a surface of mean
-    // opacity m < 1 is passed with probability 1 − m, β multiplied by (1 − Os)/(1 − m), else
+    // The next hit the path scatters at (into sp_, its distance into *t), among those it sees
+    // (one-sided surfaces from the front: NextVisibleHit). Stochastic transparency: a surface of
+    // mean opacity m < 1 is passed with probability 1 − m, β multiplied by (1 − Os)/(1 − m), else
     // kept with β·Os/m, which is unbiased; opaque surfaces draw no number. At most
     // kMaxTransparentLayers surfaces are passed.
     bool NextScatteringHit(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
-                           float time, uint64_t* state, RayHit* hit);
+                           float time, uint64_t* state, float* t);
 
     const PathIntegrator& c_;
     int ncomps_;
