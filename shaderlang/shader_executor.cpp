@@ -151,10 +151,12 @@ bool ShaderExecutor::Run(ShaderInstance& instance, const ShaderGlobals& globals,
     x.context = &context;
     x.warnings = p.warnings.get();
     x.Prepare(p, globals.n, instance.Master().ColorComponents());
-    if (const double budget = context.ShaderTimeout(); budget > 0)
-        x.deadline = std::chrono::steady_clock::now() +
-                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                         std::chrono::duration<double>(budget));
+    const auto now = std::chrono::steady_clock::now();
+    if (context.ShadersStopped())
+        x.deadline = now;
+    else if (const double budget = context.ShaderTimeout(); budget > 0)
+        x.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(budget));
     if (globals.active) {
         x.masks[0].all = false;
         std::memcpy(x.masks[0].bits.data(), globals.active, size_t(globals.n));

@@ -229,6 +229,9 @@ class ShadingContext {
     virtual double ShaderTimeout() const { return 0; }
     // A run was stopped after `budget` seconds: a RuntimeError at the current statement.
     virtual void ShaderTimedOut(double budget);
+    // True once a run has timed out and the picture has failed: later runs stop at their first
+    // budget check instead of running out their own budget.
+    virtual bool ShadersStopped() const { return false; }
 
     // The same as RuntimeWarning for a problem that makes the picture wrong (a brdf() file that
     // cannot be used): a renderer fails the frame. By default a warning, for contexts that make no

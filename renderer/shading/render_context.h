@@ -112,11 +112,10 @@ class RenderContext : public sl::ShadingContext {
                       std::string* text) const override;
     void RuntimeWarning(const std::string& key, const std::string& message) override;
     void RuntimeError(const std::string& key, const std::string& message) override;
-    // Once a run has timed out the frame fails: the later runs stop at their first check.
-    double ShaderTimeout() const override {
-        return shaders_.TimedOut() ? 1e-9 : shaders_.ShaderTimeout();
-    }
+    double ShaderTimeout() const override { return shaders_.ShaderTimeout(); }
     void ShaderTimedOut(double budget) override;
+    // Once a run has timed out the frame fails: the later runs stop at their first check.
+    bool ShadersStopped() const override { return shaders_.TimedOut(); }
     void Print(const std::string& text) override;
     const int* UNeighbours() const override {
         return neighbours_ ? neighbours_->u.data() : noNeighbours_.data();
