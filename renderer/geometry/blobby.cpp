@@ -1,0 +1,134 @@
+#include "renderer/geometry/blobby.h"
+
+#include <cmath>
+
+#include "renderer/geometry/blobby_field.h"
+#include "renderer/geometry/primvar_eval.h"
+#include "renderer/geometry/surface_nets.h"
+
+namespace gonio {
+
+namespace {
+
+// The grid points PolygonizeSurfaceNets samples over `box` with cells of side `cell`.
+double GridPoints(const Box3f& box, float cell) {
+    double points = 1;
+    for (int a = 0; a < 3; ++a) points *= std::ceil((box.max[a] - box.min[a]) / cell) + 3;
+    return points;
+}
+
+// Unit shading normals pointing out of the surface: −∇F, or the mean of the vertex's facet
+// normals where the gradient vanishes (a saddle, or F flat at the threshold).
+std::vector<V3f> OutwardNormals(const IsoMesh& iso) {
+    std::vector<V3f> facets(iso.positions.size(), V3f(0));
+    for (size_t t = 0; t + 2 < iso.indices.size(); t += 3) {
+        const V3f& a = iso.positions[iso.indices[t]];
+        const V3f n =
+            (iso.positions[iso.indices[t + 1]] - a).cross(iso.positions[iso.indices[t + 2]] - a);
+        for (int k = 0; k < 3; ++k) facets[iso.indices[t + k]] += n;
+    }
+    std::vector<V3f> normals(iso.positions.size());
+    for (size_t i = 0; i < normals.size(); ++i) {
+        const V3f n = iso.gradients[i].length2() > 0 ? -iso.gradients[i] : facets[i];
+        normals[i] = n.length2() > 0 ? n.normalized() : V3f(0, 0, 1);
+    }
+    return normals;
+}
+
+// The vertex-rate variables blended at each mesh vertex by the leaves' weights there.
+void AddBlendedVars(const BlobbyField& field, const PrimVarSet& vars, TriangleMesh* mesh) {
+    std::vector<const PrimVar*> blended;
+    for (const PrimVar& var : vars.vars) {
+        if (IsPositionVar(var.decl.name) || var.decl.name == "N") continue;
+        const bool perLeaf = var.decl.cls == ParamClass::Vertex ||
+                             var.decl.cls == ParamClass::Varying ||
+                             var.decl.cls == ParamClass::FaceVarying;
+        if (perLeaf && var.strings.empty())
+            blended.push_back(&var);
+        else
+            mesh->vars.push_back(UnchangedMeshVar(var));
+    }
+    if (blended.empty()) return;
+    std::vector<std::vector<float>> values(blended.size());
+    std::vector<FieldSample> scratch;
+    std::vector<float> weights;
+    for (const V3f& p : mesh->positions) {
+        field.LeafWeights(p, &scratch, &weights);
+        for (size_t v = 0; v < blended.size(); ++v) {
+            const PrimVar& var = *blended[v];
+            const size_t first = values[v].size();
+            values[v].resize(first + var.components, 0.f);
+            for (size_t leaf = 0; leaf < weights.size(); ++leaf) {
+                if (weights[leaf] == 0) continue;
+                const float* value = var.Value(static_cast<int>(leaf));
+                for (int c = 0; c < var.components; ++c)
+                    values[v][first + c] += weights[leaf] * value[c];
+            }
+        }
+    }
+    for (size_t v = 0; v < blended.size(); ++v)
+        mesh->vars.push_back(
+            MeshVar{WithValues(*blended[v], std::move(values[v])), MeshRate::PerVertex});
+}
+
+}  // namespace
+
+float BlobbyTessellation::CellSize(float feature, const Box3f& box) const {
+    float cell = feature * std::sqrt(shadingRate) / kCellsPerRadius;
+    const Imath::V3f size = box.size();
+    const float largest = std::max({size.x, size.y, size.z});
+    if (!(cell > 0) || !std::isfinite(cell)) cell = largest / 64;
+    while (GridPoints(box, cell) > double(kGridBudget)) cell *= 1.25f;
+    return cell;
+}
+
+GeometryResult<BlobbyMesh> MakeBlobby(int nleaf, const std::vector<int>& code,
+                                      const std::vector<float>& floats,
+                                      const std::vector<std::string>& strings,
+                                      const PrimVarSet& vars, const BlobbyTessellation& rates,
+                                      std::vector<std::string>* notes) {
+    using Result = GeometryResult<BlobbyMesh>;
+    auto program = DecodeBlobby(nleaf, code, floats, strings, notes);
+    if (!program) return Result::Error(program.Error());
+    const int leaves = static_cast<int>(program.Value().leaves.size());
+    if (auto bad = CheckCounts(vars, ClassCounts{1, leaves, leaves, leaves}))
+        return Result::Error(*bad);
+    if (vars.Find("N")) notes->push_back("N is ignored: normals come from the field's gradient");
+
+    const BlobbyField field(program.Take());
+    BlobbyMesh out;
+    if (field.Bounds().isEmpty()) {
+        notes->push_back(
+            "the code has no ellipsoid or segment blob: there is no closed surface "
+            "to render");
+        return out;
+    }
+    const bool everywhere = field.FarValue() > BlobbyField::kThreshold;
+    if (everywhere)
+        notes->push_back(
+            "the field is above the threshold away from every blob: the surface is "
+            "cut off at the blobs' bound");
+
+    std::vector<FieldSample> scratch;
+    IsoField iso;
+    iso.evaluate = [&](const V3f& p, float* value, V3f* gradient) {
+        const FieldSample s = field.Evaluate(p, &scratch);
+        *value = s.value - BlobbyField::kThreshold;
+        *gradient = s.gradient;
+    };
+    iso.mayCross = [&](const Box3f& box) { return everywhere || field.Touches(box); };
+    const Box3f bounds = field.Bounds();
+    IsoMesh surface =
+        PolygonizeSurfaceNets(iso, bounds, rates.CellSize(field.SmallestFeature(), bounds));
+
+    TriangleMesh& mesh = out.mesh;
+    mesh.normals = OutwardNormals(surface);
+    mesh.positions = std::move(surface.positions);
+    mesh.indices = std::move(surface.indices);
+    mesh.faceOfTriangle.assign(mesh.TriangleCount(), 0);  // one uniform value: one "face"
+    out.sampledPoints = surface.sampledPoints;
+    AddBlendedVars(field, vars, &mesh);
+    return out;
+}
+
+}  // namespace gonio

@@ -1,0 +1,39 @@
+#pragma once
+// Polygonizing the level set F = 0 of a scalar field (inside where F > 0) by naive surface nets
+// (Gibson 1998, "Constrained elastic surface nets"; the dual of marching cubes): the field is
+// sampled on a regular grid; every cell whose corners change sign gets one vertex, and every
+// grid edge whose ends change sign becomes a quad joining the four cells around it. There is
+// no case table, the mesh is watertight wherever the surface stays inside the grid, and each
+// vertex is moved onto the surface by Newton steps along the field's gradient, so vertices lie
+// on the exact surface and only the facets between them approximate it.
+//
+// Blocks of cells that cannot hold the surface (the caller says which) are not sampled, so a
+// field whose surface fills little of its bound costs little more than that surface.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "renderer/geometry/shape.h"
+
+namespace gonio {
+
+struct IsoField {
+    // F and its gradient at a point.
+    std::function<void(const V3f& p, float* value, V3f* gradient)> evaluate;
+    // False when F < 0 throughout the box for certain (the block is skipped).
+    std::function<bool(const Box3f& box)> mayCross;
+};
+
+struct IsoMesh {
+    std::vector<V3f> positions;
+    std::vector<V3f> gradients;     // ∇F at each position
+    std::vector<uint32_t> indices;  // three per triangle; (b − a) × (c − a) points to F < 0
+    long sampledPoints = 0;         // grid points evaluated (the cost)
+};
+
+// The surface inside `box` on cubic cells of side `cell` (one more cell of margin around the
+// box, so that a surface inside the box closes).
+IsoMesh PolygonizeSurfaceNets(const IsoField& field, const Box3f& box, float cell);
+
+}  // namespace gonio
