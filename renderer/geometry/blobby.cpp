@@ -1,6 +1,7 @@
 #include "renderer/geometry/blobby.h"
 
 #include <cmath>
+#include <memory>
 
 #include "renderer/geometry/blobby_field.h"
 #include "renderer/geometry/primvar_eval.h"
@@ -109,14 +110,16 @@ GeometryResult<BlobbyMesh> MakeBlobby(int nleaf, const std::vector<int>& code,
             "the field is above the threshold away from every blob: the surface is "
             "cut off at the blobs' bound");
 
-    std::vector<FieldSample> scratch;
+    auto local = std::make_shared<BlobbyField::Local>();
     IsoField iso;
-    iso.evaluate = [&](const V3f& p, float* value, V3f* gradient) {
-        const FieldSample s = field.Evaluate(p, &scratch);
-        *value = s.value - BlobbyField::kThreshold;
-        *gradient = s.gradient;
+    iso.near = [&](const Box3f& box) -> IsoEvaluator {
+        if (!field.Localize(box, local.get()) && !everywhere) return {};
+        return [&field, local](const V3f& p, float* value, V3f* gradient) {
+            const FieldSample s = field.Evaluate(p, local.get());
+            *value = s.value - BlobbyField::kThreshold;
+            *gradient = s.gradient;
+        };
     };
-    iso.mayCross = [&](const Box3f& box) { return everywhere || field.Touches(box); };
     const Box3f bounds = field.Bounds();
     IsoMesh surface =
         PolygonizeSurfaceNets(iso, bounds, rates.CellSize(field.SmallestFeature(), bounds));

@@ -174,22 +174,23 @@ void PassWeight(const BlobbyInstruction& in, const std::vector<FieldSample>& at,
 
 BlobbyField::BlobbyField(BlobbyProgram program) : program_(std::move(program)) {
     const float surfaceRadius = std::sqrt(1 - std::cbrt(kThreshold));
-    std::vector<FieldSample> far(program_.instructions.size());
+    far_.resize(program_.instructions.size());
     for (size_t i = 0; i < program_.instructions.size(); ++i) {
         const BlobbyInstruction& in = program_.instructions[i];
         if (in.op != Op::Leaf) {
-            far[i] = Combine(in, far);
+            operations_.push_back(static_cast<int>(i));
+            far_[i] = Combine(in, far_);
             continue;
         }
         const BlobbyLeaf& leaf = program_.leaves[in.leaf];
-        if (leaf.kind == Kind::Constant) far[i].value = leaf.constant;
+        if (leaf.kind == Kind::Constant) far_[i].value = leaf.constant;
         if (leaf.support.isEmpty()) continue;
         bounds_.extendBy(leaf.support);
         const float scale = SmallestScale(leaf.objectFromBlob) *
                             (leaf.kind == Kind::Segment ? leaf.radius : 1.f) * surfaceRadius;
         smallestFeature_ = smallestFeature_ > 0 ? std::min(smallestFeature_, scale) : scale;
     }
-    farValue_ = far.empty() ? 0.f : far.back().value;
+    farValue_ = far_.empty() ? 0.f : far_.back().value;
 }
 
 FieldSample BlobbyField::LeafField(const BlobbyLeaf& leaf, const V3f& p) const {
@@ -247,10 +248,28 @@ void BlobbyField::LeafWeights(const V3f& p, std::vector<FieldSample>* scratch,
     }
 }
 
-bool BlobbyField::Touches(const Box3f& box) const {
-    for (const BlobbyLeaf& leaf : program_.leaves)
-        if (!leaf.support.isEmpty() && leaf.support.intersects(box)) return true;
-    return false;
+bool BlobbyField::Localize(const Box3f& box, Local* local) const {
+    local->at = far_;
+    local->leaves.clear();
+    bool touched = false;
+    for (size_t i = 0; i < program_.instructions.size(); ++i) {
+        const BlobbyInstruction& in = program_.instructions[i];
+        if (in.op != Op::Leaf) continue;
+        const BlobbyLeaf& leaf = program_.leaves[in.leaf];
+        if (leaf.kind == Kind::Plane) local->leaves.push_back(static_cast<int>(i));
+        if (leaf.support.isEmpty() || !leaf.support.intersects(box)) continue;
+        local->leaves.push_back(static_cast<int>(i));
+        touched = true;
+    }
+    return touched;
+}
+
+FieldSample BlobbyField::Evaluate(const V3f& p, Local* local) const {
+    std::vector<FieldSample>& at = local->at;
+    for (int i : local->leaves)
+        at[i] = LeafField(program_.leaves[program_.instructions[i].leaf], p);
+    for (int i : operations_) at[i] = Combine(program_.instructions[i], at);
+    return at.back();
 }
 
 }  // namespace gonio

@@ -60,14 +60,25 @@ class BlobbyField {
     // axis): the tessellation's feature size. 0 when there is no ellipsoid or segment.
     float SmallestFeature() const { return smallestFeature_; }
 
-    // Whether some ellipsoid or segment support overlaps `box`: if none does, the field in the
-    // box is FarValue() (planes aside).
-    bool Touches(const Box3f& box) const;
+    // The field restricted to a box: only the leaves whose supports meet it (and the planes)
+    // are evaluated there; the others keep their value far away. Tessellating a blobby of many
+    // small leaves costs what each block's few leaves cost, not all of them.
+    struct Local {
+        std::vector<int> leaves;      // instructions of the leaves evaluated
+        std::vector<FieldSample> at;  // one sample per instruction
+    };
+    // Prepares `local` for points in `box`; false when no ellipsoid or segment reaches it (the
+    // field there is FarValue(), planes aside).
+    bool Localize(const Box3f& box, Local* local) const;
+    // The field at p, for p in the box `local` was prepared for.
+    FieldSample Evaluate(const V3f& p, Local* local) const;
 
   private:
     FieldSample LeafField(const BlobbyLeaf& leaf, const V3f& p) const;
 
     BlobbyProgram program_;
+    std::vector<int> operations_;   // the instructions that are not leaves, in order
+    std::vector<FieldSample> far_;  // every instruction's sample where no support reaches
     Box3f bounds_;
     float farValue_ = 0;
     float smallestFeature_ = 0;

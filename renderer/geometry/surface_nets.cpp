@@ -27,41 +27,14 @@ struct Grid {
     long CellCount() const { return long(n[0]) * n[1] * n[2]; }
 };
 
-// Samples F at every grid point of the blocks that may hold the surface; the others keep −1.
-std::vector<float> SampleGrid(const IsoField& field, const Grid& g, long* sampled) {
-    std::vector<float> values(g.PointCount(), -1.f);
-    std::vector<uint8_t> wanted(values.size(), 0);
-    for (int bz = 0; bz < g.n[2]; bz += kBlock)
-        for (int by = 0; by < g.n[1]; by += kBlock)
-            for (int bx = 0; bx < g.n[0]; bx += kBlock) {
-                const int ex = std::min(bx + kBlock, g.n[0]), ey = std::min(by + kBlock, g.n[1]),
-                          ez = std::min(bz + kBlock, g.n[2]);
-                if (!field.mayCross(Box3f(g.Point(bx, by, bz), g.Point(ex, ey, ez)))) continue;
-                for (int k = bz; k <= ez; ++k)
-                    for (int j = by; j <= ey; ++j)
-                        for (int i = bx; i <= ex; ++i) wanted[g.PointIndex(i, j, k)] = 1;
-            }
-    V3f unused;
-    *sampled = 0;
-    for (int k = 0; k <= g.n[2]; ++k)
-        for (int j = 0; j <= g.n[1]; ++j)
-            for (int i = 0; i <= g.n[0]; ++i) {
-                const long index = g.PointIndex(i, j, k);
-                if (!wanted[index]) continue;
-                field.evaluate(g.Point(i, j, k), &values[index], &unused);
-                ++*sampled;
-            }
-    return values;
-}
-
 // The 12 edges of a cell as pairs of corner numbers (corner c is at offset (c&1, c>>1&1, c>>2)).
 constexpr int kEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
 // The cell's vertex: the mean of its edges' linear crossings, then Newton steps
 // x ← x − F·∇F/|∇F|² onto F = 0 while they stay near the cell and bring F closer to 0.
-void CellVertex(const IsoField& field, const Grid& g, const std::vector<float>& values, int i,
-                int j, int k, V3f* position, V3f* gradient) {
+void CellVertex(const IsoEvaluator& evaluate, const Grid& g, const std::vector<float>& values,
+                int i, int j, int k, V3f* position, V3f* gradient) {
     float corner[8];
     V3f at[8];
     for (int c = 0; c < 8; ++c) {
@@ -82,7 +55,7 @@ void CellVertex(const IsoField& field, const Grid& g, const std::vector<float>& 
     const Box3f near(at[0] - V3f(g.cell), at[7] + V3f(g.cell));
     float value;
     V3f grad;
-    field.evaluate(x, &value, &grad);
+    evaluate(x, &value, &grad);
     *position = x, *gradient = grad;
     float best = std::fabs(value);
     for (int step = 0; step < 8 && best > 0; ++step) {
@@ -90,11 +63,25 @@ void CellVertex(const IsoField& field, const Grid& g, const std::vector<float>& 
         if (!(g2 > 0)) break;
         x -= (value / g2) * grad;
         if (!near.intersects(x)) break;
-        field.evaluate(x, &value, &grad);
+        evaluate(x, &value, &grad);
         if (!(std::fabs(value) < best)) break;
         best = std::fabs(value);
         *position = x, *gradient = grad;
     }
+}
+
+// The vertex of cell (i, j, k) if the surface crosses it.
+void AddCellVertex(const IsoEvaluator& evaluate, const Grid& g, const std::vector<float>& values,
+                   int i, int j, int k, std::vector<int32_t>* vertexOfCell, IsoMesh* mesh) {
+    int inside = 0;
+    for (int c = 0; c < 8; ++c)
+        inside += values[g.PointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2))] > 0;
+    if (inside == 0 || inside == 8) return;
+    V3f p, grad;
+    CellVertex(evaluate, g, values, i, j, k, &p, &grad);
+    (*vertexOfCell)[g.CellIndex(i, j, k)] = int32_t(mesh->positions.size());
+    mesh->positions.push_back(p);
+    mesh->gradients.push_back(grad);
 }
 
 // Two triangles for the quad q0 q1 q2 q3 (counter-clockwise about its normal), split along
@@ -119,21 +106,34 @@ IsoMesh PolygonizeSurfaceNets(const IsoField& field, const Box3f& box, float cel
     g.origin = box.min - V3f(cell);
     for (int a = 0; a < 3; ++a)
         g.n[a] = std::max(1, int(std::ceil((box.max[a] - box.min[a]) / cell))) + 2;
-    const std::vector<float> values = SampleGrid(field, g, &mesh.sampledPoints);
-
+    // Block by block: sample the points not sampled yet, then place the vertices of the
+    // block's cells (whose corners all lie in the block). Vertices stay within a cell of their
+    // own cell, so the block's evaluator serves a box one cell larger.
+    std::vector<float> values(g.PointCount(), -1.f);
+    std::vector<uint8_t> sampled(values.size(), 0);
     std::vector<int32_t> vertexOfCell(g.CellCount(), -1);
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int j = 0; j < g.n[1]; ++j)
-            for (int i = 0; i < g.n[0]; ++i) {
-                int inside = 0;
-                for (int c = 0; c < 8; ++c)
-                    inside += values[g.PointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2))] > 0;
-                if (inside == 0 || inside == 8) continue;
-                V3f p, grad;
-                CellVertex(field, g, values, i, j, k, &p, &grad);
-                vertexOfCell[g.CellIndex(i, j, k)] = int32_t(mesh.positions.size());
-                mesh.positions.push_back(p);
-                mesh.gradients.push_back(grad);
+    for (int bz = 0; bz < g.n[2]; bz += kBlock)
+        for (int by = 0; by < g.n[1]; by += kBlock)
+            for (int bx = 0; bx < g.n[0]; bx += kBlock) {
+                const int ex = std::min(bx + kBlock, g.n[0]), ey = std::min(by + kBlock, g.n[1]),
+                          ez = std::min(bz + kBlock, g.n[2]);
+                const IsoEvaluator evaluate = field.near(
+                    Box3f(g.Point(bx, by, bz) - V3f(cell), g.Point(ex, ey, ez) + V3f(cell)));
+                if (!evaluate) continue;
+                V3f unused;
+                for (int k = bz; k <= ez; ++k)
+                    for (int j = by; j <= ey; ++j)
+                        for (int i = bx; i <= ex; ++i) {
+                            const long index = g.PointIndex(i, j, k);
+                            if (sampled[index]) continue;
+                            evaluate(g.Point(i, j, k), &values[index], &unused);
+                            sampled[index] = 1;
+                            ++mesh.sampledPoints;
+                        }
+                for (int k = bz; k < ez; ++k)
+                    for (int j = by; j < ey; ++j)
+                        for (int i = bx; i < ex; ++i)
+                            AddCellVertex(evaluate, g, values, i, j, k, &vertexOfCell, &mesh);
             }
 
     // Each grid edge along axis a that changes sign is shared by four cells, offset along the

@@ -18,11 +18,13 @@
 
 namespace gonio {
 
+// F and its gradient at a point.
+using IsoEvaluator = std::function<void(const V3f& p, float* value, V3f* gradient)>;
+
 struct IsoField {
-    // F and its gradient at a point.
-    std::function<void(const V3f& p, float* value, V3f* gradient)> evaluate;
-    // False when F < 0 throughout the box for certain (the block is skipped).
-    std::function<bool(const Box3f& box)> mayCross;
+    // An evaluator for points inside `box`, or an empty one when F < 0 throughout the box for
+    // certain (the block is then not sampled).
+    std::function<IsoEvaluator(const Box3f& box)> near;
 };
 
 struct IsoMesh {
