@@ -91,42 +91,44 @@ float SmallestScale(const M44f& m) {
     return static_cast<float>(std::sqrt(std::max(0.0, std::min({eigen.x, eigen.y, eigen.z}))));
 }
 
-// Combines the operand samples of one operation (RISpec 3.2 §5.6, Table 5.3).
-FieldSample Combine(const BlobbyInstruction& in, const std::vector<FieldSample>& at) {
-    const FieldSample& first = at[in.operands[0]];
-    FieldSample out = first;
-    switch (in.op) {
+// a ∘ b for the operations whose operand lists fold left to right: add, multiply (with the
+// product rule for the gradient), maximum and minimum (the first operand wins ties).
+FieldSample Fold(Op op, const FieldSample& a, const FieldSample& b) {
+    switch (op) {
         case Op::Add:
-            for (size_t k = 1; k < in.operands.size(); ++k) {
-                out.value += at[in.operands[k]].value;
-                out.gradient += at[in.operands[k]].gradient;
-            }
-            break;
+            return {a.value + b.value, a.gradient + b.gradient};
         case Op::Multiply:
-            for (size_t k = 1; k < in.operands.size(); ++k) {
-                const FieldSample& b = at[in.operands[k]];
-                out.gradient = out.gradient * b.value + b.gradient * out.value;
-                out.value *= b.value;
-            }
-            break;
+            return {a.value * b.value, a.gradient * b.value + b.gradient * a.value};
+        case Op::Maximum:
+            return b.value > a.value ? b : a;
+        case Op::Minimum:
+            return b.value < a.value ? b : a;
+        default:
+            return a;
+    }
+}
+
+// Combines the operand samples of one operation (RISpec 3.2 §5.6, Table 5.3).
+FieldSample Combine(Op op, const std::vector<int>& operands, const std::vector<FieldSample>& at) {
+    FieldSample out = at[operands[0]];
+    switch (op) {
+        case Op::Add:
+        case Op::Multiply:
         case Op::Maximum:
         case Op::Minimum:
-            for (size_t k = 1; k < in.operands.size(); ++k) {
-                const FieldSample& b = at[in.operands[k]];
-                if (in.op == Op::Maximum ? b.value > out.value : b.value < out.value) out = b;
-            }
+            for (size_t k = 1; k < operands.size(); ++k) out = Fold(op, out, at[operands[k]]);
             break;
         case Op::Subtract:
-            out.value -= at[in.operands[1]].value;
-            out.gradient -= at[in.operands[1]].gradient;
+            out.value -= at[operands[1]].value;
+            out.gradient -= at[operands[1]].gradient;
             break;
         case Op::Divide: {
             // A division by a zero field gives 0, as in Aqsis: there is no surface there.
-            const FieldSample& b = at[in.operands[1]];
+            const FieldSample& a = at[operands[0]];
+            const FieldSample& b = at[operands[1]];
             if (b.value == 0) return {};
-            out.value = first.value / b.value;
-            out.gradient =
-                (first.gradient * b.value - b.gradient * first.value) / (b.value * b.value);
+            out.value = a.value / b.value;
+            out.gradient = (a.gradient * b.value - b.gradient * a.value) / (b.value * b.value);
             break;
         }
         case Op::Negate:
@@ -138,6 +140,10 @@ FieldSample Combine(const BlobbyInstruction& in, const std::vector<FieldSample>&
             break;
     }
     return out;
+}
+
+bool Folds(Op op) {
+    return op == Op::Add || op == Op::Multiply || op == Op::Maximum || op == Op::Minimum;
 }
 
 // Where an operation sends the weight `w` it received: into `down` at its operands.
@@ -178,8 +184,7 @@ BlobbyField::BlobbyField(BlobbyProgram program) : program_(std::move(program)) {
     for (size_t i = 0; i < program_.instructions.size(); ++i) {
         const BlobbyInstruction& in = program_.instructions[i];
         if (in.op != Op::Leaf) {
-            operations_.push_back(static_cast<int>(i));
-            far_[i] = Combine(in, far_);
+            far_[i] = Combine(in.op, in.operands, far_);
             continue;
         }
         const BlobbyLeaf& leaf = program_.leaves[in.leaf];
@@ -224,7 +229,8 @@ FieldSample BlobbyField::Evaluate(const V3f& p, std::vector<FieldSample>* scratc
     at.resize(program_.instructions.size());
     for (size_t i = 0; i < at.size(); ++i) {
         const BlobbyInstruction& in = program_.instructions[i];
-        at[i] = in.op == Op::Leaf ? LeafField(program_.leaves[in.leaf], p) : Combine(in, at);
+        at[i] = in.op == Op::Leaf ? LeafField(program_.leaves[in.leaf], p)
+                                  : Combine(in.op, in.operands, at);
     }
     return at.back();
 }
@@ -251,15 +257,37 @@ void BlobbyField::LeafWeights(const V3f& p, std::vector<FieldSample>* scratch,
 bool BlobbyField::Localize(const Box3f& box, Local* local) const {
     local->at = far_;
     local->leaves.clear();
+    local->operations.clear();
+    std::vector<uint8_t> varies(program_.instructions.size(), 0);
     bool touched = false;
     for (size_t i = 0; i < program_.instructions.size(); ++i) {
         const BlobbyInstruction& in = program_.instructions[i];
-        if (in.op != Op::Leaf) continue;
-        const BlobbyLeaf& leaf = program_.leaves[in.leaf];
-        if (leaf.kind == Kind::Plane) local->leaves.push_back(static_cast<int>(i));
-        if (leaf.support.isEmpty() || !leaf.support.intersects(box)) continue;
-        local->leaves.push_back(static_cast<int>(i));
-        touched = true;
+        if (in.op == Op::Leaf) {
+            const BlobbyLeaf& leaf = program_.leaves[in.leaf];
+            const bool reaches = !leaf.support.isEmpty() && leaf.support.intersects(box);
+            touched |= reaches;
+            if (reaches || leaf.kind == Kind::Plane) {
+                varies[i] = 1;
+                local->leaves.push_back(static_cast<int>(i));
+            }
+            continue;
+        }
+        LocalOperation op;
+        op.instruction = static_cast<int>(i);
+        for (int a : in.operands)
+            if (varies[a]) op.operands.push_back(a);
+        if (op.operands.empty()) continue;  // its far value holds throughout the box
+        varies[i] = 1;
+        if (!Folds(in.op)) {
+            op.operands = in.operands;
+        } else if (op.operands.size() < in.operands.size()) {
+            std::vector<int> constant;
+            for (int a : in.operands)
+                if (!varies[a]) constant.push_back(a);
+            op.folded = Combine(in.op, constant, far_);
+            op.hasFolded = true;
+        }
+        local->operations.push_back(std::move(op));
     }
     return touched;
 }
@@ -268,7 +296,11 @@ FieldSample BlobbyField::Evaluate(const V3f& p, Local* local) const {
     std::vector<FieldSample>& at = local->at;
     for (int i : local->leaves)
         at[i] = LeafField(program_.leaves[program_.instructions[i].leaf], p);
-    for (int i : operations_) at[i] = Combine(program_.instructions[i], at);
+    for (const LocalOperation& op : local->operations) {
+        const Op kind = program_.instructions[op.instruction].op;
+        FieldSample out = Combine(kind, op.operands, at);
+        at[op.instruction] = op.hasFolded ? Fold(kind, out, op.folded) : out;
+    }
     return at.back();
 }
 

@@ -61,16 +61,25 @@ class BlobbyField {
     float SmallestFeature() const { return smallestFeature_; }
 
     // The field restricted to a box: only the leaves whose supports meet it (and the planes)
-    // are evaluated there; the others keep their value far away. Tessellating a blobby of many
-    // small leaves costs what each block's few leaves cost, not all of them.
+    // are evaluated there, and only the operations that depend on them; an add, multiply,
+    // maximum or minimum folds its other operands into one constant. Tessellating a blobby of
+    // many small leaves then costs what each block's few leaves cost, not all of them.
+    struct LocalOperation {
+        int instruction = 0;
+        std::vector<int> operands;  // the operands that vary in the box
+        FieldSample folded;         // the others combined (add, multiply, maximum, minimum)
+        bool hasFolded = false;
+    };
     struct Local {
-        std::vector<int> leaves;      // instructions of the leaves evaluated
-        std::vector<FieldSample> at;  // one sample per instruction
+        std::vector<int> leaves;                 // instructions of the leaves evaluated
+        std::vector<LocalOperation> operations;  // the operations evaluated, in order
+        std::vector<FieldSample> at;             // one sample per instruction
     };
     // Prepares `local` for points in `box`; false when no ellipsoid or segment reaches it (the
     // field there is FarValue(), planes aside).
     bool Localize(const Box3f& box, Local* local) const;
-    // The field at p, for p in the box `local` was prepared for.
+    // The field at p, for p in the box `local` was prepared for: Evaluate(p, scratch) up to
+    // the order of floating-point additions.
     FieldSample Evaluate(const V3f& p, Local* local) const;
 
   private:

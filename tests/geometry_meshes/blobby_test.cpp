@@ -129,6 +129,42 @@ TEST(BlobbyField, OperationsFollowTheirFormulas) {
     }
 }
 
+TEST(BlobbyField, LocalEvaluationInABoxIsTheFullField) {
+    // Leaves at the origin, at (3, 0, 0) and (0, 3, 0), a constant, and every operation over
+    // them; in boxes that some leaves' supports miss, their operands are folded into constants.
+    const std::vector<float> floats = Concat({Matrix(V3f(1), V3f(0)),
+                                              Matrix(V3f(1.2f), V3f(3, 0, 0)),
+                                              Matrix(V3f(0.8f), V3f(0, 3, 0)),
+                                              {0.3f}});
+    const BlobbyField field = Field({1001, 0, 1001, 16, 1001, 32, 1000, 48,  // 0-3
+                                     0,    3, 0,    1,  2,                   // 4 add
+                                     2,    3, 0,    1,  3,                   // 5 max
+                                     1,    3, 4,    3,  2,                   // 6 multiply
+                                     3,    2, 5,    6,                       // 7 min
+                                     4,    4, 7,                             // 8 subtract
+                                     5,    8, 4,                             // 9 divide
+                                     6,    9,                                // 10 negate
+                                     0,    4, 10,   4,  5,    1},            // 11 add
+                                    floats);
+    std::vector<FieldSample> scratch;
+    BlobbyField::Local local;
+    int compared = 0;
+    for (const V3f& corner : {V3f(-0.5f, -0.5f, -0.5f), V3f(2.5f, -0.2f, 0), V3f(0.1f, 2.6f, 0),
+                              V3f(0.8f, 0.8f, 0.2f), V3f(5, 5, 5)}) {
+        const Box3f box(corner, corner + V3f(0.9f));
+        field.Localize(box, &local);
+        for (int k = 0; k < 27; ++k) {
+            const V3f p = corner + 0.9f * V3f((k % 3) / 2.f, (k / 3 % 3) / 2.f, (k / 9) / 2.f);
+            const FieldSample full = field.Evaluate(p, &scratch);
+            const FieldSample part = field.Evaluate(p, &local);
+            EXPECT_NEAR(part.value, full.value, 1e-5f * (1 + std::fabs(full.value))) << p;
+            EXPECT_NEAR((part.gradient - full.gradient).length(), 0, 1e-4f) << p;
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, 135);
+}
+
 TEST(BlobbyField, SegmentBlobIsTheFieldOfTheDistanceToTheSegment) {
     // Ends (−1, 0, 0) and (1, 0, 0), radius 0.5, moved by (0, 0, 2).
     const BlobbyField field =
