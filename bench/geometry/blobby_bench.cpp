@@ -1,5 +1,5 @@
 // The cost of tessellating Blobby primitives (renderer/geometry/blobby.h): time per MakeBlobby,
-// triangles made, grid points sampled.
+// triangles made, grid points sampled, the cell side chosen.
 
 #include <benchmark/benchmark.h>
 
@@ -78,6 +78,7 @@ void Tessellate(benchmark::State& state, const BlobbyInput& in) {
     }
     state.counters["triangles"] = double(last.mesh.TriangleCount());
     state.counters["sampled"] = double(last.sampledPoints);
+    state.counters["cell"] = double(last.cell);
 }
 
 void BM_BlobbySphere(benchmark::State& state) { Tessellate(state, Sphere()); }

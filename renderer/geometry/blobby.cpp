@@ -1,5 +1,6 @@
 #include "renderer/geometry/blobby.h"
 
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -11,11 +12,44 @@ namespace gonio {
 
 namespace {
 
-// The grid points PolygonizeSurfaceNets samples over `box` with cells of side `cell`.
-double GridPoints(const Box3f& box, float cell) {
-    double points = 1;
-    for (int a = 0; a < 3; ++a) points *= std::ceil((box.max[a] - box.min[a]) / cell) + 3;
-    return points;
+// The grid layout of PolygonizeSurfaceNets over `box` with cells of side `cell`: its origin
+// and blocks per axis.
+struct BlockLayout {
+    V3f origin;
+    std::array<long, 3> blocks{};
+    BlockLayout(const Box3f& box, float cell) : origin(box.min - V3f(cell)) {
+        for (int a = 0; a < 3; ++a)
+            blocks[a] =
+                long(std::ceil((box.max[a] - box.min[a]) / cell) + 2) / kSurfaceNetsBlock + 1;
+    }
+    double Count() const { return double(blocks[0]) * blocks[1] * blocks[2]; }
+};
+
+// Whether PolygonizeSurfaceNets samples at most `budget` points: those of the blocks some
+// support reaches.
+bool WithinBudget(const std::vector<Box3f>& supports, const BlockLayout& layout, float cell,
+                  double budget) {
+    const double side = double(kSurfaceNetsBlock) * cell;
+    const double perBlock = std::pow(double(kSurfaceNetsBlock), 3);
+    std::vector<uint8_t> reached(size_t(layout.Count()), 0);
+    double points = 0;
+    for (const Box3f& s : supports) {
+        std::array<long, 3> lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::max(0L, long(std::floor((s.min[a] - layout.origin[a] - cell) / side)) - 1);
+            hi[a] = std::min(layout.blocks[a] - 1,
+                             long(std::floor((s.max[a] - layout.origin[a] + cell) / side)));
+        }
+        for (long z = lo[2]; z <= hi[2]; ++z)
+            for (long y = lo[1]; y <= hi[1]; ++y)
+                for (long x = lo[0]; x <= hi[0]; ++x) {
+                    uint8_t& r = reached[x + layout.blocks[0] * (y + layout.blocks[1] * z)];
+                    points += r ? 0 : perBlock;
+                    r = 1;
+                }
+        if (points > budget) return false;
+    }
+    return true;
 }
 
 // Unit shading normals pointing out of the surface: −∇F, or the mean of the vertex's facet
@@ -74,13 +108,18 @@ void AddBlendedVars(const BlobbyField& field, const PrimVarSet& vars, TriangleMe
 
 }  // namespace
 
-float BlobbyTessellation::CellSize(float feature, const Box3f& box) const {
+float BlobbyTessellation::CellSize(float feature, const std::vector<Box3f>& supports,
+                                   const Box3f& box) const {
     float cell = feature * std::sqrt(shadingRate) / kCellsPerRadius;
     const Imath::V3f size = box.size();
     const float largest = std::max({size.x, size.y, size.z});
     if (!(cell > 0) || !std::isfinite(cell)) cell = largest / 64;
-    while (GridPoints(box, cell) > double(kGridBudget)) cell *= 1.25f;
-    return cell;
+    for (;; cell *= 1.25f) {
+        const BlockLayout layout(box, cell);
+        if (layout.Count() <= double(kBlockBudget) &&
+            WithinBudget(supports, layout, cell, double(kGridBudget)))
+            return cell;
+    }
 }
 
 GeometryResult<BlobbyMesh> MakeBlobby(int nleaf, const std::vector<int>& code,
@@ -121,8 +160,11 @@ GeometryResult<BlobbyMesh> MakeBlobby(int nleaf, const std::vector<int>& code,
         };
     };
     const Box3f bounds = field.Bounds();
-    IsoMesh surface =
-        PolygonizeSurfaceNets(iso, bounds, rates.CellSize(field.SmallestFeature(), bounds));
+    std::vector<Box3f> supports;
+    for (const BlobbyLeaf& leaf : field.Program().leaves)
+        if (!leaf.support.isEmpty()) supports.push_back(leaf.support);
+    out.cell = rates.CellSize(field.SmallestFeature(), supports, bounds);
+    IsoMesh surface = PolygonizeSurfaceNets(iso, bounds, out.cell);
 
     TriangleMesh& mesh = out.mesh;
     mesh.normals = OutwardNormals(surface);

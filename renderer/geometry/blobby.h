@@ -13,8 +13,9 @@
 // 1% of its radius (tests/geometry_meshes/blobby_test.cpp), and shading normals hide them.
 //
 // Resolution: cells of side (smallest leaf surface radius) / (kCellsPerRadius / √ShadingRate),
-// enlarged until the grid over the leaves' bound has at most kGridBudget points. Blocks of
-// 8³ cells that no ellipsoid or segment reaches are not sampled.
+// enlarged until the blocks of 8³ points the leaves' supports reach hold at most kGridBudget
+// points (and the grid at most kBlockBudget blocks). The other blocks are neither sampled nor
+// stored.
 //
 // Primitive variables: constant and uniform ones as given; vertex, varying (and facevarying)
 // ones have one value per leaf, blended at each mesh vertex by BlobbyField::LeafWeights.
@@ -30,15 +31,18 @@ namespace gonio {
 struct BlobbyTessellation {
     static constexpr float kCellsPerRadius = 8;
     static constexpr long kGridBudget = 1L << 22;
+    static constexpr long kBlockBudget = 1L << 22;
     float shadingRate = 1;
 
-    // The cell side for leaves whose smallest surface radius is `feature` in a bound `box`.
-    float CellSize(float feature, const Box3f& box) const;
+    // The cell side for leaves whose smallest surface radius is `feature`, whose supports are
+    // `supports`, in their bound `box`.
+    float CellSize(float feature, const std::vector<Box3f>& supports, const Box3f& box) const;
 };
 
 struct BlobbyMesh {
     TriangleMesh mesh;  // empty when the field has no ellipsoid or segment (nothing closed)
     long sampledPoints = 0;
+    float cell = 0;  // the grid's cell side
 };
 
 // `notes` receives warnings (see DecodeBlobby) and says when nothing was rendered.

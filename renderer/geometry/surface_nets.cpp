@@ -8,55 +8,130 @@ namespace gonio {
 
 namespace {
 
-constexpr int kBlock = 8;  // cells per block side: the unit of skipping
+using Index3 = std::array<int, 3>;
 
-// The sampling grid: cells of side `cell` from `origin`, n[a] cells along axis a.
-struct Grid {
-    V3f origin;
-    float cell = 1;
-    std::array<int, 3> n{};
+// The sampling grid, stored by blocks: cells of side `cell` from `origin`, n[a] cells (n[a] + 1
+// points) along axis a, in blocks of kSurfaceNetsBlock³ points and cells. A block owns the
+// points and cells whose indices divided by the block size give its own; only blocks the
+// field may cross hold storage, every point of the others reads as outside (−1).
+class BlockGrid {
+  public:
+    static constexpr int B = kSurfaceNetsBlock;
 
-    long PointIndex(int i, int j, int k) const {
-        return i + long(n[0] + 1) * (j + long(n[1] + 1) * k);
+    BlockGrid(const Box3f& box, float cell) : cell_(cell), origin_(box.min - V3f(cell)) {
+        for (int a = 0; a < 3; ++a) {
+            n_[a] = std::max(1, int(std::ceil((box.max[a] - box.min[a]) / cell))) + 2;
+            blocks_[a] = n_[a] / B + 1;  // the last block owns point n[a]
+        }
+        slot_.assign(size_t(blocks_[0]) * blocks_[1] * blocks_[2], -1);
     }
-    long CellIndex(int i, int j, int k) const { return i + long(n[0]) * (j + long(n[1]) * k); }
-    V3f Point(int i, int j, int k) const {
-        return origin + cell * V3f(float(i), float(j), float(k));
+
+    const Index3& Cells() const { return n_; }
+    const Index3& Blocks() const { return blocks_; }
+    float Cell() const { return cell_; }
+    V3f Point(const Index3& p) const {
+        return origin_ + cell_ * V3f(float(p[0]), float(p[1]), float(p[2]));
     }
-    long PointCount() const { return long(n[0] + 1) * (n[1] + 1) * (n[2] + 1); }
-    long CellCount() const { return long(n[0]) * n[1] * n[2]; }
+
+    // The box of block b's cells (and its last points), grown by one cell: where its points
+    // are sampled and its cells' vertices are placed.
+    Box3f BlockBox(const Index3& b) const {
+        Index3 lo, hi;
+        for (int a = 0; a < 3; ++a) lo[a] = b[a] * B, hi[a] = std::min(lo[a] + B, n_[a]);
+        return Box3f(Point(lo) - V3f(cell_), Point(hi) + V3f(cell_));
+    }
+
+    void Allocate(const Index3& b) {
+        slot_[BlockIndex(b)] = int32_t(values_.size() / (B * B * B));
+        values_.resize(values_.size() + B * B * B, -1.f);
+        vertices_.resize(vertices_.size() + B * B * B, -1);
+    }
+    bool Allocated(const Index3& b) const { return slot_[BlockIndex(b)] >= 0; }
+
+    // The value at point p (outside: −1 where no block holds it).
+    float Value(const Index3& p) const {
+        const long at = Offset(p);
+        return at < 0 ? -1.f : values_[at];
+    }
+    float& ValueOf(const Index3& p) { return values_[Offset(p)]; }
+    // The vertex of cell c, or −1.
+    int32_t Vertex(const Index3& c) const {
+        const long at = Offset(c);
+        return at < 0 ? -1 : vertices_[at];
+    }
+    int32_t& VertexOf(const Index3& c) { return vertices_[Offset(c)]; }
+
+  private:
+    size_t BlockIndex(const Index3& b) const {
+        return b[0] + size_t(blocks_[0]) * (b[1] + size_t(blocks_[1]) * b[2]);
+    }
+    long Offset(const Index3& p) const {
+        const int32_t slot = slot_[BlockIndex({p[0] / B, p[1] / B, p[2] / B})];
+        if (slot < 0) return -1;
+        return long(slot) * B * B * B + p[0] % B + B * (p[1] % B + B * (p[2] % B));
+    }
+
+    float cell_;
+    V3f origin_;
+    Index3 n_{}, blocks_{};
+    std::vector<int32_t> slot_;
+    std::vector<float> values_;
+    std::vector<int32_t> vertices_;
 };
+
+// Calls f(p) for every index p with lo ≤ p < hi.
+template <class F>
+void ForEach(const Index3& lo, const Index3& hi, F f) {
+    Index3 p;
+    for (p[2] = lo[2]; p[2] < hi[2]; ++p[2])
+        for (p[1] = lo[1]; p[1] < hi[1]; ++p[1])
+            for (p[0] = lo[0]; p[0] < hi[0]; ++p[0]) f(p);
+}
+
+// The points (cells when `cells`) block b owns.
+void BlockRange(const BlockGrid& g, const Index3& b, bool cells, Index3* lo, Index3* hi) {
+    for (int a = 0; a < 3; ++a) {
+        (*lo)[a] = b[a] * BlockGrid::B;
+        (*hi)[a] = std::min((*lo)[a] + BlockGrid::B, g.Cells()[a] + (cells ? 0 : 1));
+    }
+}
+
+Index3 Offset(Index3 p, int c) {
+    p[0] += c & 1, p[1] += c >> 1 & 1, p[2] += c >> 2;
+    return p;
+}
 
 // The 12 edges of a cell as pairs of corner numbers (corner c is at offset (c&1, c>>1&1, c>>2)).
 constexpr int kEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
-// The cell's vertex: the mean of its edges' linear crossings, then Newton steps
-// x ← x − F·∇F/|∇F|² onto F = 0 while they stay near the cell and bring F closer to 0.
-void CellVertex(const IsoEvaluator& evaluate, const Grid& g, const std::vector<float>& values,
-                int i, int j, int k, V3f* position, V3f* gradient) {
+// The vertex of cell c if the surface crosses it: the mean of its edges' linear crossings, then
+// Newton steps x ← x − F·∇F/|∇F|² onto F = 0 while they stay near the cell and bring F closer
+// to 0.
+void AddCellVertex(const IsoEvaluator& evaluate, BlockGrid* g, const Index3& cell, IsoMesh* mesh) {
     float corner[8];
     V3f at[8];
+    int inside = 0;
     for (int c = 0; c < 8; ++c) {
-        const int ci = i + (c & 1), cj = j + (c >> 1 & 1), ck = k + (c >> 2);
-        corner[c] = values[g.PointIndex(ci, cj, ck)];
-        at[c] = g.Point(ci, cj, ck);
+        corner[c] = g->Value(Offset(cell, c));
+        at[c] = g->Point(Offset(cell, c));
+        inside += corner[c] > 0;
     }
-    V3f sum(0);
+    if (inside == 0 || inside == 8) return;
+    V3f x(0);
     int crossings = 0;
     for (const auto& e : kEdges) {
         const float a = corner[e[0]], b = corner[e[1]];
         if ((a > 0) == (b > 0)) continue;
-        const float t = a / (a - b);
-        sum += at[e[0]] + t * (at[e[1]] - at[e[0]]);
+        x += at[e[0]] + (a / (a - b)) * (at[e[1]] - at[e[0]]);
         ++crossings;
     }
-    V3f x = sum / float(crossings);
-    const Box3f near(at[0] - V3f(g.cell), at[7] + V3f(g.cell));
+    x /= float(crossings);
+    const Box3f near(at[0] - V3f(g->Cell()), at[7] + V3f(g->Cell()));
     float value;
-    V3f grad;
+    V3f grad, position = x, gradient;
     evaluate(x, &value, &grad);
-    *position = x, *gradient = grad;
+    gradient = grad;
     float best = std::fabs(value);
     for (int step = 0; step < 8 && best > 0; ++step) {
         const float g2 = grad.length2();
@@ -66,34 +141,46 @@ void CellVertex(const IsoEvaluator& evaluate, const Grid& g, const std::vector<f
         evaluate(x, &value, &grad);
         if (!(std::fabs(value) < best)) break;
         best = std::fabs(value);
-        *position = x, *gradient = grad;
+        position = x, gradient = grad;
     }
-}
-
-// The vertex of cell (i, j, k) if the surface crosses it.
-void AddCellVertex(const IsoEvaluator& evaluate, const Grid& g, const std::vector<float>& values,
-                   int i, int j, int k, std::vector<int32_t>* vertexOfCell, IsoMesh* mesh) {
-    int inside = 0;
-    for (int c = 0; c < 8; ++c)
-        inside += values[g.PointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2))] > 0;
-    if (inside == 0 || inside == 8) return;
-    V3f p, grad;
-    CellVertex(evaluate, g, values, i, j, k, &p, &grad);
-    (*vertexOfCell)[g.CellIndex(i, j, k)] = int32_t(mesh->positions.size());
-    mesh->positions.push_back(p);
-    mesh->gradients.push_back(grad);
+    g->VertexOf(cell) = int32_t(mesh->positions.size());
+    mesh->positions.push_back(position);
+    mesh->gradients.push_back(gradient);
 }
 
 // Two triangles for the quad q0 q1 q2 q3 (counter-clockwise about its normal), split along
 // the shorter diagonal.
-void AddQuad(const std::array<uint32_t, 4>& q, const std::vector<V3f>& positions,
+void AddQuad(const std::array<int32_t, 4>& q, const std::vector<V3f>& positions,
              std::vector<uint32_t>* indices) {
-    const float d02 = (positions[q[0]] - positions[q[2]]).length2();
-    const float d13 = (positions[q[1]] - positions[q[3]]).length2();
-    if (d02 <= d13)
-        indices->insert(indices->end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+    const uint32_t a = q[0], b = q[1], c = q[2], d = q[3];
+    if ((positions[a] - positions[c]).length2() <= (positions[b] - positions[d]).length2())
+        indices->insert(indices->end(), {a, b, c, a, c, d});
     else
-        indices->insert(indices->end(), {q[0], q[1], q[3], q[1], q[2], q[3]});
+        indices->insert(indices->end(), {a, b, d, b, c, d});
+}
+
+// The quads of the grid edges from point p along each axis a that change sign. Each is shared
+// by four cells, offset along the other two axes u, v (with u × v = a): their vertices make one
+// quad facing F < 0.
+void AddQuads(const BlockGrid& g, const Index3& p, IsoMesh* mesh) {
+    const Index3& n = g.Cells();
+    for (int a = 0; a < 3; ++a) {
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        if (p[a] >= n[a] || p[u] < 1 || p[v] < 1 || p[u] >= n[u] || p[v] >= n[v]) continue;
+        Index3 next = p;
+        ++next[a];
+        const bool in0 = g.Value(p) > 0, in1 = g.Value(next) > 0;
+        if (in0 == in1) continue;
+        auto cellAt = [&](int du, int dv) {
+            Index3 c = p;
+            c[u] -= du, c[v] -= dv;
+            return g.Vertex(c);
+        };
+        std::array<int32_t, 4> quad{cellAt(1, 1), cellAt(0, 1), cellAt(0, 0), cellAt(1, 0)};
+        if (std::min({quad[0], quad[1], quad[2], quad[3]}) < 0) continue;  // cannot happen (step 3)
+        if (!in0) std::swap(quad[1], quad[3]);                             // inside lies towards +a
+        AddQuad(quad, mesh->positions, &mesh->indices);
+    }
 }
 
 }  // namespace
@@ -101,66 +188,37 @@ void AddQuad(const std::array<uint32_t, 4>& q, const std::vector<V3f>& positions
 IsoMesh PolygonizeSurfaceNets(const IsoField& field, const Box3f& box, float cell) {
     IsoMesh mesh;
     if (box.isEmpty() || !(cell > 0)) return mesh;
-    Grid g;
-    g.cell = cell;
-    g.origin = box.min - V3f(cell);
-    for (int a = 0; a < 3; ++a)
-        g.n[a] = std::max(1, int(std::ceil((box.max[a] - box.min[a]) / cell))) + 2;
-    // Block by block: sample the points not sampled yet, then place the vertices of the
-    // block's cells (whose corners all lie in the block). Vertices stay within a cell of their
-    // own cell, so the block's evaluator serves a box one cell larger.
-    std::vector<float> values(g.PointCount(), -1.f);
-    std::vector<uint8_t> sampled(values.size(), 0);
-    std::vector<int32_t> vertexOfCell(g.CellCount(), -1);
-    for (int bz = 0; bz < g.n[2]; bz += kBlock)
-        for (int by = 0; by < g.n[1]; by += kBlock)
-            for (int bx = 0; bx < g.n[0]; bx += kBlock) {
-                const int ex = std::min(bx + kBlock, g.n[0]), ey = std::min(by + kBlock, g.n[1]),
-                          ez = std::min(bz + kBlock, g.n[2]);
-                const IsoEvaluator evaluate = field.near(
-                    Box3f(g.Point(bx, by, bz) - V3f(cell), g.Point(ex, ey, ez) + V3f(cell)));
-                if (!evaluate) continue;
-                V3f unused;
-                for (int k = bz; k <= ez; ++k)
-                    for (int j = by; j <= ey; ++j)
-                        for (int i = bx; i <= ex; ++i) {
-                            const long index = g.PointIndex(i, j, k);
-                            if (sampled[index]) continue;
-                            evaluate(g.Point(i, j, k), &values[index], &unused);
-                            sampled[index] = 1;
-                            ++mesh.sampledPoints;
-                        }
-                for (int k = bz; k < ez; ++k)
-                    for (int j = by; j < ey; ++j)
-                        for (int i = bx; i < ex; ++i)
-                            AddCellVertex(evaluate, g, values, i, j, k, &vertexOfCell, &mesh);
-            }
-
-    // Each grid edge along axis a that changes sign is shared by four cells, offset along the
-    // other two axes u, v (with u × v = a): their vertices make one quad facing F < 0.
-    for (int a = 0; a < 3; ++a) {
-        const int u = (a + 1) % 3, v = (a + 2) % 3;
-        std::array<int, 3> p{};
-        for (p[2] = 0; p[2] <= g.n[2]; ++p[2])
-            for (p[1] = 0; p[1] <= g.n[1]; ++p[1])
-                for (p[0] = 0; p[0] <= g.n[0]; ++p[0]) {
-                    if (p[a] >= g.n[a] || p[u] < 1 || p[v] < 1 || p[u] >= g.n[u] || p[v] >= g.n[v])
-                        continue;
-                    std::array<int, 3> next = p;
-                    ++next[a];
-                    const bool in0 = values[g.PointIndex(p[0], p[1], p[2])] > 0;
-                    const bool in1 = values[g.PointIndex(next[0], next[1], next[2])] > 0;
-                    if (in0 == in1) continue;
-                    auto cellAt = [&](int du, int dv) {
-                        std::array<int, 3> c = p;
-                        c[u] -= du, c[v] -= dv;
-                        return uint32_t(vertexOfCell[g.CellIndex(c[0], c[1], c[2])]);
-                    };
-                    std::array<uint32_t, 4> quad{cellAt(1, 1), cellAt(0, 1), cellAt(0, 0),
-                                                 cellAt(1, 0)};
-                    if (!in0) std::swap(quad[1], quad[3]);  // inside lies towards +a
-                    AddQuad(quad, mesh.positions, &mesh.indices);
-                }
+    BlockGrid g(box, cell);
+    const Index3 zero{0, 0, 0};
+    // 1. Sample the points of the blocks the field may cross. A point of a block without
+    //    storage reads −1: that block's box (edges included) is outside for certain.
+    std::vector<Index3> used;
+    ForEach(zero, g.Blocks(), [&](const Index3& b) {
+        const IsoEvaluator evaluate = field.near(g.BlockBox(b));
+        if (!evaluate) return;
+        g.Allocate(b);
+        used.push_back(b);
+        Index3 lo, hi;
+        BlockRange(g, b, false, &lo, &hi);
+        V3f unused;
+        ForEach(lo, hi, [&](const Index3& p) { evaluate(g.Point(p), &g.ValueOf(p), &unused); });
+        mesh.sampledPoints += long(hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+    });
+    // 2. One vertex per crossed cell. Corners come from the shared values, so a cell has a
+    //    vertex exactly when an edge of it changes sign, which step 3 relies on; cells of
+    //    blocks without storage are outside at every corner.
+    for (const Index3& b : used) {
+        const IsoEvaluator evaluate = field.near(g.BlockBox(b));
+        Index3 lo, hi;
+        BlockRange(g, b, true, &lo, &hi);
+        ForEach(lo, hi, [&](const Index3& c) { AddCellVertex(evaluate, &g, c, &mesh); });
+    }
+    // 3. One quad per crossing edge; edges from points of blocks without storage stay inside
+    //    such a block's box and cross nothing.
+    for (const Index3& b : used) {
+        Index3 lo, hi;
+        BlockRange(g, b, false, &lo, &hi);
+        ForEach(lo, hi, [&](const Index3& p) { AddQuads(g, p, &mesh); });
     }
     return mesh;
 }

@@ -7,8 +7,9 @@
 // vertex is moved onto the surface by Newton steps along the field's gradient, so vertices lie
 // on the exact surface and only the facets between them approximate it.
 //
-// Blocks of cells that cannot hold the surface (the caller says which) are not sampled, so a
-// field whose surface fills little of its bound costs little more than that surface.
+// Blocks of cells that cannot hold the surface (the caller says which) are neither sampled nor
+// stored, so a field whose surface fills little of its bound costs little more than that
+// surface, in time and in memory.
 
 #include <cstdint>
 #include <functional>
@@ -17,6 +18,9 @@
 #include "renderer/geometry/shape.h"
 
 namespace gonio {
+
+// Points and cells per block side: the unit of skipping.
+constexpr int kSurfaceNetsBlock = 8;
 
 // F and its gradient at a point.
 using IsoEvaluator = std::function<void(const V3f& p, float* value, V3f* gradient)>;
