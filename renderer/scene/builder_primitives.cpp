@@ -3,6 +3,7 @@
 
 #include <Imath/ImathMatrixAlgo.h>
 
+#include "renderer/geometry/blobby.h"
 #include "renderer/geometry/curves.h"
 #include "renderer/geometry/nurbs.h"
 #include "renderer/geometry/patches.h"
@@ -298,12 +299,28 @@ void SceneBuilder::Torus(float majorRadius, float minorRadius, float phimin, flo
     AddQuadric("Torus", MakeTorus(majorRadius, minorRadius, phimin, phimax, thetamax), params, loc);
 }
 
-// ---- not rendered ---------------------------------------------------------------------------
+// ---- implicit surfaces ----------------------------------------------------------------------
 
-void SceneBuilder::Blobby(int, const std::vector<int>&, const std::vector<float>&,
-                          const std::vector<std::string>&, const ParamList&, const FileLoc& loc) {
-    diagnostics_.WarningOnce("Blobby", loc, "Blobby is not supported: skipped");
+// RISpec 3.2 §5.6: tessellated at a density set by ShadingRate (renderer/geometry/blobby.h).
+void SceneBuilder::Blobby(int nleaf, const std::vector<int>& code, const std::vector<float>& floats,
+                          const std::vector<std::string>& strings, const ParamList& params,
+                          const FileLoc& loc) {
+    PrimVarSet vars;
+    if (!StartPrimitive("Blobby", loc) || !TypeVars(params, &vars)) return;
+    BlobbyTessellation rates;
+    rates.shadingRate = state_->attributes.shadingRate;
+    std::vector<std::string> notes;
+    auto blobby = MakeBlobby(nleaf, code, floats, strings, vars, rates, &notes);
+    for (const std::string& note : notes)
+        diagnostics_.WarningOnce("Blobby " + note, loc, "Blobby: " + note);
+    if (!blobby) {
+        diagnostics_.Error(loc, "Blobby: " + blobby.Error());
+        return;
+    }
+    if (blobby.Value().mesh.TriangleCount() > 0) AddShape(std::move(blobby.Value().mesh), loc);
 }
+
+// ---- not rendered ---------------------------------------------------------------------------
 
 void SceneBuilder::Procedural(const std::string& name, const std::vector<std::string>&,
                               const std::vector<float>&, const FileLoc& loc) {

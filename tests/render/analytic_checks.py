@@ -410,6 +410,75 @@ def teapot_side_view_covers_its_silhouette(b, me):
         expect(max(value[:3]) > 0.02, f"pixel {xy} inside the silhouette is black: {value}")
 
 
+def blob_field(s):
+    """Application Note #31's field of one Blobby leaf at squared blob-space distance s."""
+    return (1 - s) ** 3 if s < 1 else 0.0
+
+
+BLOB_RADIUS = math.sqrt(1 - 0.5 ** (1 / 3))  # a lone unit leaf's surface: (1 - r²)³ = 0.5
+
+
+@check("batch")
+def blobby_ellipsoid_is_the_threshold_sphere(b, me):
+    """Blobby 1 [1001 0] with a matrix that scales by 2 is the sphere of radius 2·√(1 − 0.5^⅓)
+    ≈ 0.9084 (RISpec 3.2 §5.6: field (1 − r²)³, surface at 0.5): seen orthographically it covers
+    πR²/16 of ScreenWindow [-2,2]², and matte lit from the eye shows cos θ = √(1 − ρ²/R²) at
+    distance ρ from its centre, so its shading normals are the sphere's."""
+    world = ('LightSource "distantlight" 1 "from" [0 0 0] "to" [0 0 1]\nSurface "matte"\n'
+             'Blobby 1 [1001 0] [2 0 0 0  0 2 0 0  0 0 2 0  0 0 0 1] [""]\n')
+    b.frame(me, "a", ortho(), world)
+    yield
+    image, radius = b.image(me, "a"), 2 * BLOB_RADIUS
+    expect_close(image.mean(3), math.pi * radius * radius / 16, 0.01, "mean alpha of the blob")
+    for x, y in ((64, 64), (80, 64), (64, 44), (76, 76), (50, 70)):
+        rho = math.hypot((x + 0.5) / 32 - 2, 2 - (y + 0.5) / 32)
+        expect(abs(image.pixels[(x, y)][0] - math.sqrt(1 - (rho / radius) ** 2)) < 0.01,
+               f"pixel {(x, y)} at ρ = {rho:.3f}: {image.pixels[(x, y)][0]:.4f}, expected "
+               f"cos θ = {math.sqrt(1 - (rho / radius) ** 2):.4f}")
+
+
+@check("batch")
+def blobby_two_leaves_blend_shape_and_colour(b, me):
+    """Two unit leaves at x = ±0.4 added (opcode 0), red and blue per leaf ("vertex color Cs"),
+    Surface "constant". The silhouette is where the summed field in the plane z = 0 reaches 0.5
+    (each leaf's field is largest there along a line of sight); the colour of a pixel is the
+    leaves' colours weighted by their fields at the visible surface point, found here by
+    bisection along the ray."""
+    d = 0.4
+    world = ('Surface "constant"\nBlobby 2 [1001 0 1001 16 0 2 0 1]\n'
+             f'[1 0 0 0  0 1 0 0  0 0 1 0  {-d} 0 0 1  1 0 0 0  0 1 0 0  0 0 1 0  {d} 0 0 1] [""]\n'
+             '"vertex color Cs" [1 0 0  0 0 1]\n')
+    b.frame(me, "a", ortho(window="-1 1 -1 1"), world)
+    yield
+    image = b.image(me, "a")
+
+    def fields(x, y, z):
+        return (blob_field((x + d) ** 2 + y * y + z * z), blob_field((x - d) ** 2 + y * y + z * z))
+
+    def centre(px, py):
+        return (px + 0.5) / 64 - 1, 1 - (py + 0.5) / 64
+
+    inside = {xy for xy in image.pixels if sum(fields(*centre(*xy), 0)) >= 0.5}
+    covered = {xy for xy, p in image.pixels.items() if p[3] >= 0.5}
+    expect(len(inside ^ covered) <= 0.02 * len(inside),
+           f"{len(inside ^ covered)} pixels differ from the {len(inside)} inside the silhouette")
+    checked = 0
+    for xy in sorted(inside):
+        if image.pixels[xy][3] < 1 or xy[0] % 7 or xy[1] % 7:
+            continue
+        x, y = centre(*xy)
+        near, far = 0.0, 1.0  # the front surface point: the field falls with |z|
+        for _ in range(40):
+            mid = (near + far) / 2
+            near, far = (mid, far) if sum(fields(x, y, mid)) >= 0.5 else (near, mid)
+        a, c = fields(x, y, near)
+        want = [a / (a + c), 0.0, c / (a + c)]
+        expect_values([round(v, 3) for v in image.pixels[xy][:3]], [round(v, 3) for v in want],
+                      0.011, f"colour at pixel {xy}")
+        checked += 1
+    expect(checked > 30, f"only {checked} pixels checked")
+
+
 @check("batch")
 def colour_samples_convert_to_rgb(b, me):
     """RISpec §4.1.3 ColorSamples: colours have n components, converted to RGB by nRGB (n rows

@@ -25,6 +25,15 @@ WorldEnd
 """
 
 
+IDENTITY = "[1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]"
+
+
+def blobby_scene(code, floats=IDENTITY):
+    """A frame whose one primitive is a Blobby with the given code and float arrays."""
+    return ('Format 8 8 1\nDisplay "a.tif" "file" "rgba"\nWorldBegin\n'
+            f'Blobby 1 {code} {floats} [""]\nWorldEnd\n')
+
+
 def scene(image, before=""):
     return before + SPHERE.format(image=image)
 
@@ -200,6 +209,19 @@ CASES = [
     ("shader_endless_loop", ["render", "s.rib"],
      {"s.rib": ENDLESS_SCENE, "endless.sl": ENDLESS_SHADER}, None,
      1, "endless.sl:1: error: the shader ran longer than its time budget of 0.5 s", ["s.tif"]),
+    # Blobby code arrays that would read past the float array, name no operation, or refer
+    # forward (a cycle): a located error, and the strict frame is not written.
+    ("blobby_float_index_beyond_the_floats", ["render", "--strict", "s.rib"],
+     {"s.rib": blobby_scene("[1001 10]")}, None,
+     1, "s.rib:4:1: error: Blobby: code[1]: the ellipsoid's 16 floats start at 10, but the "
+     "float array has 16", ["a.tif"]),
+    ("blobby_unknown_opcode", ["render", "--strict", "s.rib"],
+     {"s.rib": blobby_scene("[1001 0 9 0]")}, None,
+     1, "s.rib:4:1: error: Blobby: code[2]: unknown opcode 9", ["a.tif"]),
+    ("blobby_forward_reference", ["render", "--strict", "s.rib"],
+     {"s.rib": blobby_scene("[0 2 0 1 1001 0]")}, None,
+     1, "s.rib:4:1: error: Blobby: code[2]: instruction 0 uses instruction 0, which is not an "
+     "earlier one", ["a.tif"]),
     # brdf() with a file it cannot use fails the render; no picture shaded black is written.
     ("brdf_missing_grd", ["render", "s.rib"],
      {"s.rib": brdf_scene("missing.grd"), "b.sl": BRDF_SHADER}, None,
