@@ -55,7 +55,8 @@ class PlotCanvas {
 
 // How OpenImageIO's make_texture (what `maketx` runs) makes a tiled, MIP-mapped texture file.
 struct TextureMakeOptions {
-    // A plain texture (MakeTxTexture) or a lat-long environment (MakeTxEnvLatl).
+    // A plain texture (MakeTxTexture) or a lat-long environment (MakeTxEnvLatl), its picture
+    // in OpenImageIO's layout (+y up: imageio/environment_layout.h).
     bool latLongEnvironment = false;
     // Recorded as the file's "wrapmodes", which lookups follow unless they ask for another mode;
     // an environment map's wrap follows from its layout instead (periodic in s, clamped in t).

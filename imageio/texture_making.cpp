@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "imageio/cube_face_environment.h"
+#include "imageio/environment_layout.h"
 #include "imageio/image_formats.h"
 #include "imageio/oiio_plugin.h"
 
@@ -33,11 +33,16 @@ CubeFaces ReadCubeFaces(OiioPlugin& plugin, const std::vector<std::string>& path
     return faces;
 }
 
-// The picture the texture is made from: the one picture, or the cube faces as a lat-long map.
+// The picture the texture is made from: the one picture, or for an environment the lat-long
+// map in OpenImageIO's layout (environment_layout.h).
 ImageFileContents SourcePicture(OiioPlugin& plugin, const TextureFileRequest& request,
                                 std::string* error) {
-    if (request.kind != TextureFileKind::CubeFaceEnvironment)
+    if (request.kind == TextureFileKind::Texture)
         return ReadPicture(plugin, request.pictures.at(0), error);
+    if (request.kind == TextureFileKind::LatLongEnvironment) {
+        const ImageFileContents picture = ReadPicture(plugin, request.pictures.at(0), error);
+        return error->empty() ? LatLongFromRenderManLatLong(picture) : ImageFileContents{};
+    }
     if (request.pictures.size() != 6) {
         *error = "a cube face environment needs 6 pictures, got " +
                  std::to_string(request.pictures.size());

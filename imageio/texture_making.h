@@ -23,7 +23,8 @@ struct TextureFileRequest {
 };
 
 // Makes the texture file `path`: a TIFF, or an OpenEXR file when the name says so (".exr").
-// Cube faces become a lat-long environment (imageio/cube_face_environment.h says why). Returns
+// Environments are resampled into OpenImageIO's lat-long layout (imageio/environment_layout.h
+// says why). Returns
 // the reason on failure ("" on success), naming the picture that cannot be read; then `path` is
 // left as it was.
 std::string MakeTextureFile(const TextureFileRequest& request, const std::string& path);

@@ -4,7 +4,9 @@
 //
 // The probe scene renders one pixel per lookup: pixel i is covered by its own polygon whose
 // shader looks up at a uniform (s, t) or direction, so the footprint is zero and OpenImageIO
-// reads the top MIP level bilinearly: at a texel centre that is the texel itself.
+// reads the top MIP level with its B-spline bicubic (weights summing to 1 over 4 × 4 pixels):
+// inside a constant block of 4 × 4 pixels that is the block's value, midway between two blocks
+// their mean.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -16,7 +18,7 @@
 #include <functional>
 #include <sstream>
 
-#include "imageio/cube_face_environment.h"
+#include "imageio/environment_layout.h"
 #include "imageio/image_formats.h"
 #include "imageio/oiio_plugin.h"
 #include "tests/support/render_rib.h"
@@ -131,9 +133,14 @@ void ExpectRgb(const Rgb& got, const Rgb& want, const std::string& what) {
 
 // ---- MakeTexture and the wrap modes ---------------------------------------------------------
 
-// 4 x 2 texels: red grows with the column, green with the row, so every texel differs.
-constexpr int kW = 4, kH = 2;
+// 4 x 2 texels: red grows with the column, green with the row, so every texel differs. Each is
+// a block of 4 x 4 pixels of the picture, wider than the bicubic lookup's reach.
+constexpr int kW = 4, kH = 2, kBlock = 4;
 Rgb Texel(int x, int y) { return {0.1f * (x + 1), 0.2f * (y + 1), 0.5f}; }
+void WriteGrid(const std::string& path) {
+    WritePicture(path, kW * kBlock, kH * kBlock,
+                 [](int x, int y) { return Texel(x / kBlock, y / kBlock); });
+}
 // Texel centres: s = (x + 1/2) / 4, t = (y + 1/2) / 2.
 float S(int x) { return (x + 0.5f) / kW; }
 float T(int y) { return (y + 0.5f) / kH; }
@@ -143,7 +150,7 @@ Rgb Mean(const Rgb& a, const Rgb& b) {
 
 TEST(MakeTexture, WrapModesOutsideTheUnitSquare) {
     Scratch scratch;
-    WritePicture(scratch.File("grid.tif"), kW, kH, Texel);
+    WriteGrid(scratch.File("grid.tif"));
     const std::string grid = scratch.File("grid.tif");
     const std::string periodic = scratch.File("periodic.tx"), clamp = scratch.File("clamp.tx"),
                       black = scratch.File("black.tx");
@@ -181,7 +188,7 @@ TEST(MakeTexture, WrapModesOutsideTheUnitSquare) {
 // texture()'s "swrap"/"twrap" parameters override the file's modes.
 TEST(MakeTexture, LookupWrapParametersOverrideTheFile) {
     Scratch scratch;
-    WritePicture(scratch.File("grid.tif"), kW, kH, Texel);
+    WriteGrid(scratch.File("grid.tif"));
     const std::string black = scratch.File("black.tx");
     const Render r = RenderProbes(
         scratch,
@@ -206,9 +213,10 @@ int OctantOf(double x, double y, double z) { return (x < 0) | (y < 0) << 1 | (z 
 
 TEST(MakeLatLongEnvironment, EachOctantOfDirectionsReadsItsColour) {
     Scratch scratch;
-    // OpenImageIO's lat-long layout, as documented: s = 1/2 + atan2(y, x)/2π, t = acos(z)/π;
-    // each texel gets the colour of the octant of the direction at its centre.
-    const int w = 16, h = 8;
+    // RenderMan's lat-long layout, as documented: s = 1/2 + atan2(y, x)/2π, t = acos(z)/π;
+    // each texel gets the colour of the octant of the direction at its centre (octants are
+    // 16 x 16 texels, and the probes look at their middles, far from the resampling's blur).
+    const int w = 64, h = 32;
     constexpr double kPi = 3.14159265358979323846;
     WritePicture(scratch.File("sky.tif"), w, h, [&](int x, int y) {
         const double phi = 2 * kPi * ((x + 0.5) / w - 0.5), theta = kPi * (y + 0.5) / h;
