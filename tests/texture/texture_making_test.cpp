@@ -9,11 +9,9 @@
 // their mean.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -22,11 +20,10 @@
 #include "imageio/image_formats.h"
 #include "imageio/oiio_plugin.h"
 #include "tests/support/render_rib.h"
+#include "tests/support/test_folder.h"
 
 namespace gonio {
 namespace {
-
-namespace fs = std::filesystem;
 
 using Rgb = std::array<float, 3>;
 
@@ -41,27 +38,12 @@ surface probe(string map = ""; float ss = 0, tt = 0; string wrap = "default";
 }
 )";
 
-class Scratch {
+// A scratch folder per test case, holding the probe shader.
+class Scratch : public test::TestFolder {
   public:
-    Scratch() {
-        path_ = fs::temp_directory_path() /
-                ("gonio_texture_test_" + std::to_string(getpid()) + "_" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path_);
-        fs::create_directories(path_);
+    Scratch() : TestFolder("gonio_texture_test_") {
         std::ofstream(File("probe.sl")) << kProbeShader;
     }
-    ~Scratch() { fs::remove_all(path_); }
-    std::string File(const std::string& name) const { return (path_ / name).string(); }
-    std::vector<std::string> Entries() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(path_))
-            names.push_back(entry.path().filename().string());
-        return names;
-    }
-
-  private:
-    fs::path path_;
 };
 
 // A float RGB picture written by the built-in TIFF driver.
