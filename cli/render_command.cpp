@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "frame_range.h"
 #include "renderer/frame/frame_renderer.h"
+#include "renderer/image/texture_making.h"
 #include "renderer/photon/photon_frame.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_file.h"
@@ -142,9 +143,15 @@ int RunRender(const RenderOptions& options) {
         }
         ReportUnusedParameters(frame, diagnostics);
     };
-    BuildScene(options.scene, ReaderOf(options.scene, diagnostics), diagnostics, renderFrame);
+    int texturesMade = 0;
+    auto makeTexture = [&](const TextureRequest& request) {
+        if (MakeRequestedTexture(request, diagnostics)) ++texturesMade;
+    };
+    BuildScene(options.scene, ReaderOf(options.scene, diagnostics), diagnostics, renderFrame,
+               makeTexture);
     if (outputFailed) return 2;
-    if (rendered == 0 && diagnostics.ErrorCount() == 0) {
+    // A RIB that only makes textures (as scenes prepare their maps) has done its work.
+    if (rendered == 0 && texturesMade == 0 && diagnostics.ErrorCount() == 0) {
         if (frames.Given()) {
             std::fprintf(stderr, "gonio render: the scene has no frame in --frames %s\n",
                          options.frames.c_str());

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
@@ -95,15 +96,15 @@ std::string FormatForFileName(const std::string& fileName) {
         .FormatForExtension(Lowercase(extension));
 }
 
-std::string WriteImageFile(const std::string& format, const std::string& path,
-                           const ImageFileSpec& spec, const PixelBuffer& pixels) {
+std::string WriteThroughTemporary(const std::string& path,
+                                  const std::function<std::string(const std::string&)>& write) {
     fs::path folder = fs::path(path).parent_path();
     std::error_code statError;
     if (!folder.empty() && !fs::is_directory(folder, statError))
         return "the folder \"" + folder.string() + "\" does not exist";
     const std::string temporary = TemporaryName(path);
     const PendingTemporary pending(temporary);
-    std::string error = WriteThroughDriver(format, temporary, spec, pixels);
+    std::string error = write(temporary);
     if (error.empty()) {
         std::error_code renameError;
         fs::rename(temporary, path, renameError);
@@ -112,10 +113,17 @@ std::string WriteImageFile(const std::string& format, const std::string& path,
     }
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    if (error.empty()) return "the image writer failed without saying why";
+    if (error.empty()) return "the writer failed without saying why";
     for (size_t at = error.find(temporary); at != std::string::npos; at = error.find(temporary))
         error.replace(at, temporary.size(), path);
     return error;
+}
+
+std::string WriteImageFile(const std::string& format, const std::string& path,
+                           const ImageFileSpec& spec, const PixelBuffer& pixels) {
+    return WriteThroughTemporary(path, [&](const std::string& temporary) {
+        return WriteThroughDriver(format, temporary, spec, pixels);
+    });
 }
 
 }  // namespace gonio

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "base/texture_wrap.h"
 #include "imageio/image_file.h"
 
 namespace gonio {
@@ -20,10 +21,10 @@ namespace gonio {
 class TextureSystem {
   public:
     virtual ~TextureSystem() = default;
-    virtual bool Texture(const std::string& file, int firstChannel, int channels, int n,
-                         const float* s, const float* t, const float* dsdx, const float* dtdx,
-                         const float* dsdy, const float* dtdy, const uint8_t* active,
-                         float* out) = 0;
+    virtual bool Texture(const std::string& file, int firstChannel, int channels,
+                         const TextureWrapModes& wrap, int n, const float* s, const float* t,
+                         const float* dsdx, const float* dtdx, const float* dsdy, const float* dtdy,
+                         const uint8_t* active, float* out) = 0;
     virtual bool Environment(const std::string& file, int firstChannel, int channels, int n,
                              const float* directions, const uint8_t* active, float* out) = 0;
     virtual bool Info(const std::string& file, const std::string& dataname,
@@ -52,6 +53,22 @@ class PlotCanvas {
     virtual std::vector<float> Downsampled(int width, int height) = 0;
 };
 
+// How OpenImageIO's make_texture (what `maketx` runs) makes a tiled, MIP-mapped texture file.
+struct TextureMakeOptions {
+    // A plain texture (MakeTxTexture) or a lat-long environment (MakeTxEnvLatl), its picture
+    // in OpenImageIO's layout (+y up: imageio/environment_layout.h).
+    bool latLongEnvironment = false;
+    // Recorded as the file's "wrapmodes", which lookups follow unless they ask for another mode;
+    // an environment map's wrap follows from its layout instead (periodic in s, clamped in t).
+    TextureWrapModes wrap;
+    // OpenImageIO's name of the filter that makes the MIP levels ("box", "gaussian",
+    // "catmull-rom", ...) at its own width for that filter; "" its default.
+    std::string filter;
+    // OpenImageIO's name of the file's format ("tiff", "openexr"): the file is written under a
+    // temporary name that says nothing.
+    std::string format = "tiff";
+};
+
 class OiioPlugin {
   public:
     virtual ~OiioPlugin() = default;
@@ -64,6 +81,10 @@ class OiioPlugin {
     // Every channel of the file's first subimage, with its string metadata; the reason in
     // `error` when it cannot be read.
     virtual ImageFileContents ReadImage(const std::string& path, std::string* error) = 0;
+    // Makes `picture` (its samples stored as picture.spec.fileType says) a texture file at
+    // `path` (the caller renames it into place). Returns the reason on failure, "" on success.
+    virtual std::string MakeTexture(const ImageFileContents& picture, const std::string& path,
+                                    const TextureMakeOptions& options) = 0;
     virtual std::unique_ptr<TextureSystem> NewTextureSystem() = 0;
     virtual std::unique_ptr<PlotCanvas> NewPlotCanvas(int width, int height) = 0;
 };

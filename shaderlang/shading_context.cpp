@@ -21,9 +21,9 @@ const std::vector<LightResult>& ShadingContext::Lights() {
     return kNone;
 }
 
-bool ShadingContext::Texture(const std::string& name, int, int channels, const float*, const float*,
-                             const float*, const float*, const float*, const float*, const uint8_t*,
-                             float* out) {
+bool ShadingContext::Texture(const std::string& name, int, int channels, const TextureWrapModes&,
+                             const float*, const float*, const float*, const float*, const float*,
+                             const float*, const uint8_t*, float* out) {
     return Unavailable("texture(\"" + name + "\")", channels, out);
 }
 

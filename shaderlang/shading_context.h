@@ -16,6 +16,7 @@
 
 #include "base/file_loc.h"
 #include "base/hash.h"
+#include "base/texture_wrap.h"
 #include "shaderlang/runtime/batch.h"
 #include "shaderlang/types.h"
 
@@ -134,13 +135,14 @@ class ShadingContext {
     }
 
     // Filtered texture lookup of `channels` channels starting at `firstChannel`, per point, at
-    // (s, t) with the four-corner footprint when ds/dt are given (may be null). Options are the
-    // RSL texture parameters ("blur", "width", "filter", "fill", ...). Writes channels × n
-    // floats to out (component-major). False (and black) if the texture cannot be read; the
-    // context then reports why through RuntimeWarning.
-    virtual bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                         const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                         const float* dtdy, const uint8_t* active, float* out);
+    // (s, t) with the four-corner footprint when ds/dt are given (may be null), s and t outside
+    // [0, 1] wrapped as the "swrap"/"twrap"/"wrap" parameters say (Default: as the file
+    // records). Writes channels × n floats to out (component-major). False (and black) if the
+    // texture cannot be read; the context then reports why through RuntimeWarning.
+    virtual bool Texture(const std::string& name, int firstChannel, int channels,
+                         const TextureWrapModes& wrap, const float* s, const float* t,
+                         const float* dsdx, const float* dtdx, const float* dsdy, const float* dtdy,
+                         const uint8_t* active, float* out);
     virtual bool Environment(const std::string& name, int firstChannel, int channels,
                              const float* directions /* 3 × n */, const uint8_t* active,
                              float* out);

@@ -6,45 +6,17 @@
 #include <map>
 
 #include "imageio/oiio/oiio_parts.h"
+#include "imageio/oiio/oiio_spec.h"
 
 namespace gonio {
 
 namespace {
-
-OIIO::TypeDesc OiioType(PixelType type) {
-    switch (type) {
-        case PixelType::UInt8:
-            return OIIO::TypeDesc::UINT8;
-        case PixelType::UInt16:
-            return OIIO::TypeDesc::UINT16;
-        case PixelType::Half:
-            return OIIO::TypeDesc::HALF;
-        default:
-            return OIIO::TypeDesc::FLOAT;
-    }
-}
 
 PixelType GonioType(OIIO::TypeDesc type) {
     if (type == OIIO::TypeDesc::UINT8) return PixelType::UInt8;
     if (type == OIIO::TypeDesc::UINT16) return PixelType::UInt16;
     if (type == OIIO::TypeDesc::HALF) return PixelType::Half;
     return PixelType::Float;
-}
-
-OIIO::ImageSpec OiioSpec(const ImageFileSpec& spec) {
-    OIIO::ImageSpec out(spec.width, spec.height, spec.Channels(), OiioType(spec.fileType));
-    out.x = spec.x;
-    out.y = spec.y;
-    out.full_x = 0;
-    out.full_y = 0;
-    out.full_width = spec.FullWidth();
-    out.full_height = spec.FullHeight();
-    out.channelnames = spec.channelNames;
-    out.alpha_channel = spec.alphaChannel;
-    out.z_channel = spec.zChannel;
-    if (!spec.compression.empty()) out.attribute("compression", spec.compression);
-    for (const auto& [name, value] : spec.attributes) out.attribute(name, value);
-    return out;
 }
 
 ImageFileSpec GonioSpec(const OIIO::ImageSpec& spec) {
@@ -114,6 +86,11 @@ class Plugin : public OiioPlugin {
         if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, contents.pixels.data()))
             *error = in->geterror();
         return contents;
+    }
+
+    std::string MakeTexture(const ImageFileContents& picture, const std::string& path,
+                            const TextureMakeOptions& options) override {
+        return MakeOiioTexture(picture, path, options);
     }
 
     std::unique_ptr<TextureSystem> NewTextureSystem() override { return NewOiioTextureSystem(); }

@@ -16,9 +16,10 @@ class OiioTextureSystem : public TextureSystem {
     OiioTextureSystem() : system_(OIIO::TextureSystem::create(/*shared=*/false)) {}
     ~OiioTextureSystem() override { OIIO::TextureSystem::destroy(system_); }
 
-    bool Texture(const std::string& file, int firstChannel, int channels, int n, const float* s,
-                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                 const float* dtdy, const uint8_t* active, float* out) override;
+    bool Texture(const std::string& file, int firstChannel, int channels,
+                 const TextureWrapModes& wrap, int n, const float* s, const float* t,
+                 const float* dsdx, const float* dtdx, const float* dsdy, const float* dtdy,
+                 const uint8_t* active, float* out) override;
     bool Environment(const std::string& file, int firstChannel, int channels, int n,
                      const float* directions, const uint8_t* active, float* out) override;
     bool Info(const std::string& file, const std::string& dataname, std::vector<float>* floats,
@@ -95,14 +96,29 @@ bool LookupEachPoint(OIIO::TextureSystem* system, const std::string& file, int f
     return ok;
 }
 
-bool OiioTextureSystem::Texture(const std::string& file, int firstChannel, int channels, int n,
-                                const float* s, const float* t, const float* dsdx,
-                                const float* dtdx, const float* dsdy, const float* dtdy,
-                                const uint8_t* active, float* out) {
+OIIO::TextureOpt::Wrap OiioWrap(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::Black:
+            return OIIO::TextureOpt::WrapBlack;
+        case TextureWrap::Clamp:
+            return OIIO::TextureOpt::WrapClamp;
+        case TextureWrap::Periodic:
+            return OIIO::TextureOpt::WrapPeriodic;
+        default:  // the file's "wrapmodes"
+            return OIIO::TextureOpt::WrapDefault;
+    }
+}
+
+bool OiioTextureSystem::Texture(const std::string& file, int firstChannel, int channels,
+                                const TextureWrapModes& wrap, int n, const float* s, const float* t,
+                                const float* dsdx, const float* dtdx, const float* dsdy,
+                                const float* dtdy, const uint8_t* active, float* out) {
     OIIO::TextureSystem* system = system_;
     return LookupEachPoint(system, file, firstChannel, channels, n, active, out,
                            [&](OIIO::TextureSystem::TextureHandle* handle,
                                OIIO::TextureOpt& options, int i, float* result) {
+                               options.swrap = OiioWrap(wrap.s);
+                               options.twrap = OiioWrap(wrap.t);
                                const float ds = dsdx ? dsdx[i] : 0, dt = dtdx ? dtdx[i] : 0;
                                const float ds2 = dsdy ? dsdy[i] : 0, dt2 = dtdy ? dtdy[i] : 0;
                                return system->texture(handle, nullptr, options, s[i], t[i], ds, dt,

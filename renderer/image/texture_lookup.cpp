@@ -42,14 +42,14 @@ bool TextureLookup::Info(const std::string& file, const std::string& dataname,
     return system && system->Info(file, dataname, floats, text);
 }
 
-bool TextureLookup::Texture(const std::string& file, int firstChannel, int channels, int n,
-                            const float* s, const float* t, const float* dsdx, const float* dtdx,
-                            const float* dsdy, const float* dtdy, const uint8_t* active,
-                            float* out) {
+bool TextureLookup::Texture(const std::string& file, int firstChannel, int channels,
+                            const TextureWrapModes& wrap, int n, const float* s, const float* t,
+                            const float* dsdx, const float* dtdx, const float* dsdy,
+                            const float* dtdy, const uint8_t* active, float* out) {
     TextureSystem* system = System(file);
     if (!system) std::fill(out, out + size_t(channels) * n, 0.f);
-    return system && system->Texture(file, firstChannel, channels, n, s, t, dsdx, dtdx, dsdy, dtdy,
-                                     active, out);
+    return system && system->Texture(file, firstChannel, channels, wrap, n, s, t, dsdx, dtdx, dsdy,
+                                     dtdy, active, out);
 }
 
 bool TextureLookup::Environment(const std::string& file, int firstChannel, int channels, int n,

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "base/texture_wrap.h"
+
 namespace gonio {
 
 class TextureSystem;
@@ -18,11 +20,13 @@ class TextureLookup {
     ~TextureLookup();
 
     // `channels` channels from `firstChannel` at (s, t) for each active point of n, filtered
-    // over the footprint given by the derivatives (which may be null: a point lookup). Writes
+    // over the footprint given by the derivatives (which may be null: a point lookup), s and t
+    // outside [0, 1] wrapped as `wrap` says (Default: as the file records). Writes
     // channels × n floats, component-major. False if the file cannot be read (out is zeroed).
-    bool Texture(const std::string& file, int firstChannel, int channels, int n, const float* s,
-                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                 const float* dtdy, const uint8_t* active, float* out);
+    bool Texture(const std::string& file, int firstChannel, int channels,
+                 const TextureWrapModes& wrap, int n, const float* s, const float* t,
+                 const float* dsdx, const float* dtdx, const float* dsdy, const float* dtdy,
+                 const uint8_t* active, float* out);
     // A lat-long or cube environment map in direction D (3 × n, in the space the map was made
     // in: the shader transforms it there).
     bool Environment(const std::string& file, int firstChannel, int channels, int n,

@@ -328,25 +328,7 @@ void SceneBuilder::Procedural(const std::string& name, const std::vector<std::st
                              "Procedural \"" + name + "\" is not supported: skipped");
 }
 
-// ---- texture making: not a renderer's job here ----------------------------------------------
-
-void SceneBuilder::MakeTexture(const std::string&, const std::string&, const std::string&,
-                               const std::string&, const std::string&, float, float,
-                               const ParamList&, const FileLoc& loc) {
-    IgnoredRequest("MakeTexture (use maketx)", loc);
-}
-
-void SceneBuilder::MakeLatLongEnvironment(const std::string&, const std::string&,
-                                          const std::string&, float, float, const ParamList&,
-                                          const FileLoc& loc) {
-    IgnoredRequest("MakeLatLongEnvironment (use maketx)", loc);
-}
-
-void SceneBuilder::MakeCubeFaceEnvironment(const std::vector<std::string>&, const std::string&,
-                                           float, const std::string&, float, float,
-                                           const ParamList&, const FileLoc& loc) {
-    IgnoredRequest("MakeCubeFaceEnvironment (use maketx)", loc);
-}
+// ---- shadow maps: not a renderer's job here -------------------------------------------------
 
 void SceneBuilder::MakeShadow(const std::string&, const std::string&, const ParamList&,
                               const FileLoc& loc) {

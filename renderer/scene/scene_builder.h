@@ -3,7 +3,9 @@
 // object definitions, lights) and turns every primitive into a SceneShape. At each WorldEnd it
 // hands the finished Frame to a callback: the image renderer or the photon tracer.
 // Scope rules (options only outside the world, primitives only inside, balanced blocks) are
-// checked here and reported with the request's location.
+// checked here and reported with the request's location. Texture-making requests (MakeTexture,
+// MakeLatLongEnvironment, MakeCubeFaceEnvironment) go, checked, to a second callback at once,
+// so that a texture is made before the frames after it in the RIB are rendered.
 
 #include <functional>
 #include <map>
@@ -17,6 +19,7 @@
 #include "renderer/rib/ri_target.h"
 #include "renderer/scene/color_plan.h"
 #include "renderer/scene/frame.h"
+#include "renderer/scene/texture_request.h"
 
 namespace gonio::spectral {
 struct RenderColorSpace;
@@ -27,6 +30,7 @@ namespace gonio {
 class SceneBuilder : public RiTarget {
   public:
     using FrameHandler = std::function<void(const Frame&)>;
+    using TextureHandler = std::function<void(const TextureRequest&)>;
 
     SceneBuilder(std::string sceneFile, Diagnostics& diagnostics, FrameHandler onFrame);
     ~SceneBuilder() override;
@@ -36,6 +40,8 @@ class SceneBuilder : public RiTarget {
     // The colour spaces of the frames that ask for Option "spectral" "basis" "bands" or "svd",
     // chosen by a first build of the scene (BuildScene, scene_file.h).
     void SetColorPlan(ColorPlan plan);
+    // Where texture-making requests go; without a handler they are noted and ignored.
+    void SetTextureHandler(TextureHandler onTexture);
 
     void Declare(const std::string& name, const std::string& declaration,
                  const FileLoc& loc) override;
@@ -211,6 +217,9 @@ class SceneBuilder : public RiTarget {
     void PushBlock(Block block, const FileLoc& loc);
     bool PopBlock(Block block, const char* request, const FileLoc& loc);
     void IgnoredRequest(const char* request, const FileLoc& loc);
+    // Completes a texture-making request (its search path) and hands it to the handler
+    // (builder_textures.cpp).
+    void SubmitTextureRequest(TextureRequest request);
     // Option "spectral": the frame's colour components become samples of the spectrum
     // (builder_spectral.cpp).
     void SpectralOption(const ParamDict& params, const FileLoc& loc);
@@ -253,6 +262,7 @@ class SceneBuilder : public RiTarget {
     std::string sceneFile_;
     Diagnostics& diagnostics_;
     FrameHandler onFrame_;
+    TextureHandler onTexture_;
     Declarations declarations_;
     std::unique_ptr<State> state_;
 };

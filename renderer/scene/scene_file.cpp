@@ -14,7 +14,8 @@ FileLoc EndOf(const std::string& sceneName) {
 }  // namespace
 
 void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics& diagnostics,
-                const SceneBuilder::FrameHandler& onFrame) {
+                const SceneBuilder::FrameHandler& onFrame,
+                const SceneBuilder::TextureHandler& onTexture) {
     ColorPlan plan;
     SceneBuilder builder(sceneName, diagnostics, [&](const Frame& frame) {
         if (!frame.options.FitsColorSpaceToFrame()) return onFrame(frame);
@@ -25,6 +26,7 @@ void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics
                                                     " is not rendered: " + e.what());
         }
     });
+    builder.SetTextureHandler(onTexture);
     read(builder, diagnostics);
     builder.Finish(EndOf(sceneName));
     if (plan.empty()) return;
@@ -33,6 +35,8 @@ void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics
         if (plan.count(frame.ordinal)) onFrame(frame);
     });
     fitted.SetColorPlan(plan);
+    // The textures were made in the first reading; the second one passes their requests by.
+    fitted.SetTextureHandler([](const TextureRequest&) {});
     read(fitted, silent);
     fitted.Finish(EndOf(sceneName));
 }

@@ -20,8 +20,10 @@ using RibReader = std::function<void(RiTarget& target, Diagnostics& diagnostics)
 // for bands or svd is first built sampled and its colour space chosen; after the whole input has
 // been read, it is read again (silently: its messages were reported the first time) and those
 // frames alone are handed over, in their colour spaces. The frames in between are handed over from
-// the first reading.
+// the first reading. Texture-making requests go to onTexture (if given) during the first reading
+// only, each once, in RIB order.
 void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics& diagnostics,
-                const SceneBuilder::FrameHandler& onFrame);
+                const SceneBuilder::FrameHandler& onFrame,
+                const SceneBuilder::TextureHandler& onTexture = nullptr);
 
 }  // namespace gonio

@@ -1,11 +1,10 @@
 #include "renderer/shading/frame_shaders.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <sstream>
 
-#include "base/search_path.h"
 #include "renderer/raytrace/shadow_transmission.h"
+#include "renderer/scene/search_paths.h"
 #include "renderer/shading/rib_shader_parameters.h"
 
 namespace gonio {
@@ -36,20 +35,6 @@ std::string RequestKey(const ShaderInstance& request) {
     return key.str();
 }
 
-// The folder of the frame's RIB file ("." for standard input).
-std::string SceneFolder(const Frame& frame) {
-    const std::string folder = std::filesystem::path(frame.sceneFile).parent_path().string();
-    return folder.empty() ? "." : folder;
-}
-
-// `Option "searchpath" kind`, whose '&' and '@' stand for `standard`; `standard` when unset.
-std::vector<std::string> SearchPath(const Frame& frame, const std::string& kind,
-                                    const std::vector<std::string>& standard) {
-    auto it = frame.options.user.find("searchpath");
-    if (it == frame.options.user.end() || !it->second.Has(kind)) return standard;
-    return ExpandSearchPath(it->second.GetString(kind, ""), standard, standard);
-}
-
 // "a surface", "an imager".
 std::string WithArticle(sl::ShaderType type) {
     const std::string name = sl::ToString(type);
@@ -60,13 +45,13 @@ std::string WithArticle(sl::ShaderType type) {
 
 std::string DefaultShaderFolder() { return GONIO_SHADER_DIR; }
 
-// Textures and .grd files: relative to the working folder, then next to the scene.
 std::vector<std::string> FrameTextureSearchPath(const Frame& frame) {
-    return SearchPath(frame, "texture", {".", SceneFolder(frame)});
+    return TextureSearchPath(frame.options, frame.sceneFile);
 }
 
 std::vector<std::string> ShaderSearchPath(const Frame& frame) {
-    return SearchPath(frame, "shader", {SceneFolder(frame), DefaultShaderFolder()});
+    return OptionSearchPath(frame.options, "shader",
+                            {SceneFolder(frame.sceneFile), DefaultShaderFolder()});
 }
 
 std::shared_ptr<sl::ShaderInstance> LoadShaderInstance(

@@ -71,11 +71,12 @@ class ImagerContext : public sl::ShadingContext {
         }
         return false;
     }
-    bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                 const float* dtdy, const uint8_t* active, float* out) override {
-        return textures_.Texture(*this, n_, name, firstChannel, channels, s, t, dsdx, dtdx, dsdy,
-                                 dtdy, active, out);
+    bool Texture(const std::string& name, int firstChannel, int channels,
+                 const TextureWrapModes& wrap, const float* s, const float* t, const float* dsdx,
+                 const float* dtdx, const float* dsdy, const float* dtdy, const uint8_t* active,
+                 float* out) override {
+        return textures_.Texture(*this, n_, name, firstChannel, channels, wrap, s, t, dsdx, dtdx,
+                                 dsdy, dtdy, active, out);
     }
     bool Environment(const std::string& name, int firstChannel, int channels,
                      const float* directions, const uint8_t* active, float* out) override {

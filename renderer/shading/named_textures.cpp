@@ -22,11 +22,12 @@ std::string NamedTextures::Why() const {
 }
 
 bool NamedTextures::Texture(sl::ShadingContext& asker, int n, const std::string& name,
-                            int firstChannel, int channels, const float* s, const float* t,
-                            const float* dsdx, const float* dtdx, const float* dsdy,
-                            const float* dtdy, const uint8_t* active, float* out) {
-    const bool ok = lookup_.Texture(Find(name), firstChannel, channels, n, s, t, dsdx, dtdx, dsdy,
-                                    dtdy, active, out);
+                            int firstChannel, int channels, const TextureWrapModes& wrap,
+                            const float* s, const float* t, const float* dsdx, const float* dtdx,
+                            const float* dsdy, const float* dtdy, const uint8_t* active,
+                            float* out) {
+    const bool ok = lookup_.Texture(Find(name), firstChannel, channels, wrap, n, s, t, dsdx, dtdx,
+                                    dsdy, dtdy, active, out);
     if (!ok) asker.RuntimeWarning("texture " + name, "texture \"" + name + "\": " + Why());
     return ok;
 }

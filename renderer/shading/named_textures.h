@@ -24,8 +24,9 @@ class NamedTextures {
 
     // TextureLookup's lookups for n points, by name; a failure warns through `asker`.
     bool Texture(sl::ShadingContext& asker, int n, const std::string& name, int firstChannel,
-                 int channels, const float* s, const float* t, const float* dsdx, const float* dtdx,
-                 const float* dsdy, const float* dtdy, const uint8_t* active, float* out);
+                 int channels, const TextureWrapModes& wrap, const float* s, const float* t,
+                 const float* dsdx, const float* dtdx, const float* dsdy, const float* dtdy,
+                 const uint8_t* active, float* out);
     bool Environment(sl::ShadingContext& asker, int n, const std::string& name, int firstChannel,
                      int channels, const float* directions, const uint8_t* active, float* out);
     // ShadingContext::MeasuredBrdf for `count` points; a failure warns through `asker`.

@@ -217,11 +217,12 @@ void RenderContext::TraceShadows(sl::LightResult* light) {
     }
 }
 
-bool RenderContext::Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                            const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
+bool RenderContext::Texture(const std::string& name, int firstChannel, int channels,
+                            const TextureWrapModes& wrap, const float* s, const float* t,
+                            const float* dsdx, const float* dtdx, const float* dsdy,
                             const float* dtdy, const uint8_t* active, float* out) {
-    return textures_.Texture(*this, n_, name, firstChannel, channels, s, t, dsdx, dtdx, dsdy, dtdy,
-                             active, out);
+    return textures_.Texture(*this, n_, name, firstChannel, channels, wrap, s, t, dsdx, dtdx, dsdy,
+                             dtdy, active, out);
 }
 
 // The direction is used as the shader gives it: RISpec §15.7.2 leaves the map's coordinate

@@ -85,9 +85,10 @@ class RenderContext : public sl::ShadingContext {
                      std::vector<float>* floats, std::string* text) override;
     const std::vector<sl::LightResult>& Lights() override;
     const std::vector<sl::LightResult>& LightsAt(const float* P, const uint8_t* active) override;
-    bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                 const float* dtdy, const uint8_t* active, float* out) override;
+    bool Texture(const std::string& name, int firstChannel, int channels,
+                 const TextureWrapModes& wrap, const float* s, const float* t, const float* dsdx,
+                 const float* dtdx, const float* dsdy, const float* dtdy, const uint8_t* active,
+                 float* out) override;
     bool Environment(const std::string& name, int firstChannel, int channels,
                      const float* directions, const uint8_t* active, float* out) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,

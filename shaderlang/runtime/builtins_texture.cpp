@@ -7,11 +7,14 @@
 // (s1, t1, ..., s4, t4); texture("name") reads the globals s and t.
 // environment takes D or D1..D4, shadow P or P1..P4 (four are averaged). Then come optional
 // ("name", value) pairs: "width"/"swidth"/"twidth" scale the filter footprint, "blur"/"sblur"/
-// "tblur" widen it by a fraction of the texture; "filter", "fill", "samples" and "bias" are
-// accepted and left to the renderer's defaults.
+// "tblur" widen it by a fraction of the texture; "swrap"/"twrap"/"wrap" (PRMan's names) say how
+// texture() reads s and t outside [0, 1] ("black", "clamp", "periodic"; by default as the file
+// records); "filter", "fill", "samples" and "bias" are accepted and left to the renderer's
+// defaults.
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "shaderlang/runtime/builtins_derivatives.h"
@@ -76,6 +79,30 @@ TextureOptions ParseOptions(const BuiltinCall& call, int first) {
     return o;
 }
 
+// The "swrap", "twrap" and "wrap" options; an unknown mode is warned about and left to the file.
+TextureWrapModes ParseWrapOptions(const BuiltinCall& call, int first) {
+    TextureWrapModes wrap;
+    for (int a = first; a + 1 < call.argCount; a += 2) {
+        if (call.argTypes[a].base != BaseType::String || !call.strings[a].data) continue;
+        if (call.argTypes[a + 1].base != BaseType::String || !call.strings[a + 1].data) continue;
+        const std::string& name = call.strings[a].data[0];
+        if (name != "swrap" && name != "twrap" && name != "wrap") continue;
+        const std::string& value = call.strings[a + 1].data[0];
+        const std::optional<TextureWrap> mode = TextureWrapFromName(value);
+        if (!mode) {
+            if (call.context)
+                call.context->RuntimeWarning("texture:wrap " + value,
+                                             "texture(): \"" + name + "\" \"" + value +
+                                                 "\" is not \"black\", \"clamp\" or "
+                                                 "\"periodic\"; the file's mode is used");
+            continue;
+        }
+        if (name != "twrap") wrap.s = *mode;
+        if (name != "swrap") wrap.t = *mode;
+    }
+    return wrap;
+}
+
 // Copies component c of a value into a plane of n floats (uniform values broadcast).
 void Plane(const BuiltinCall& call, const FloatArg& value, int c, std::vector<float>* out) {
     out->assign(call.n, 0.0f);
@@ -107,6 +134,7 @@ void TextureKernel(const BuiltinCall& call) {
     const TextureName name = ReadTextureName(call);
     const int coords = CoordinateArgCount(call);
     const TextureOptions options = ParseOptions(call, 1 + coords);
+    const TextureWrapModes wrap = ParseWrapOptions(call, 1 + coords);
     std::vector<float> s, t, dsdx, dtdx, dsdy, dtdy;
     if (coords >= 8) {  // four corners: (s1,t1) (s2,t2) along u, (s3,t3) along v
         std::vector<float> s2, t2, s3, t3;
@@ -152,8 +180,9 @@ void TextureKernel(const BuiltinCall& call) {
     std::vector<float> out(static_cast<size_t>(w) * n, 0.0f);
     // A file that cannot be read gives black; the context says why.
     if (call.context)
-        call.context->Texture(name.file, name.firstChannel, w, s.data(), t.data(), dsdx.data(),
-                              dtdx.data(), dsdy.data(), dtdy.data(), call.active, out.data());
+        call.context->Texture(name.file, name.firstChannel, w, wrap, s.data(), t.data(),
+                              dsdx.data(), dtdx.data(), dsdy.data(), dtdy.data(), call.active,
+                              out.data());
     CopyOut(call, out);
 }
 

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "tests/support/captured_diagnostics.h"
+#include "tests/support/test_folder.h"
 
 namespace gonio {
 namespace {
@@ -46,26 +47,10 @@ Image TestImage() {
     return image;
 }
 
-class TempDir {
+// A scratch folder per test case.
+class TempDir : public test::TestFolder {
   public:
-    TempDir() {
-        path_ = fs::temp_directory_path() /
-                ("gonio_image_test_" + std::to_string(getpid()) + "_" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() { fs::remove_all(path_); }
-    std::string File(const std::string& name) const { return (path_ / name).string(); }
-    std::vector<std::string> Entries() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(path_))
-            names.push_back(entry.path().filename().string());
-        return names;
-    }
-
-  private:
-    fs::path path_;
+    TempDir() : TestFolder("gonio_image_test_") {}
 };
 
 using test::CapturedDiagnostics;

@@ -38,6 +38,14 @@ def scene(image, before=""):
     return before + SPHERE.format(image=image)
 
 
+def make_texture(picture, texture="out.tx"):
+    return f'MakeTexture "{picture}" "{texture}" "periodic" "clamp" "box" 1 1\n'
+
+
+# A 1x1 RGB picture OpenImageIO reads (PFM: a text header, then little-endian floats).
+PFM_PIXEL = b"PF\n1 1\n-1.0\n" + struct.pack("<3f", 0.25, 0.5, 0.75)
+
+
 def two_frames():
     frame = "FrameBegin {n}\n" + SPHERE + "FrameEnd\n"
     return frame.format(n=1, image="frame1.tif") + frame.format(n=2, image="frame2.tif")
@@ -222,6 +230,22 @@ CASES = [
      {"s.rib": blobby_scene("[0 2 0 1 1001 0]")}, None,
      1, "s.rib:4:1: error: Blobby: code[2]: instruction 0 uses instruction 0, which is not an "
      "earlier one", ["a.tif"]),
+    # Texture making: a picture that is missing or is no picture is an error at the request,
+    # and no texture (nor temporary) is left; a RIB that only makes textures has done its work.
+    ("make_texture_missing_picture", ["render", "s.rib"],
+     {"s.rib": make_texture("missing.tif")}, None,
+     1, 's.rib:1:1: error: MakeTexture: cannot find the picture "missing.tif"', ["out.tx"]),
+    ("make_texture_not_a_picture", ["render", "s.rib"],
+     {"s.rib": make_texture("bad.tif"), "bad.tif": "not a picture\n"}, None,
+     1, 's.rib:1:1: error: MakeTexture "out.tx": cannot read the picture "./bad.tif"',
+     ["out.tx"]),
+    ("make_cube_face_missing_face", ["render", "s.rib"],
+     {"s.rib": 'MakeCubeFaceEnvironment "p.pfm" "p.pfm" "p.pfm" "p.pfm" "p.pfm" "nz.pfm" '
+               '"cube.env" 90 "box" 1 1\n', "p.pfm": PFM_PIXEL}, None,
+     1, 's.rib:1:1: error: MakeCubeFaceEnvironment: cannot find the picture "nz.pfm"',
+     ["cube.env"]),
+    ("make_texture_only", ["render", "s.rib"],
+     {"s.rib": make_texture("p.pfm"), "p.pfm": PFM_PIXEL}, None, 0, "", []),
     # brdf() with a file it cannot use fails the render; no picture shaded black is written.
     ("brdf_missing_grd", ["render", "s.rib"],
      {"s.rib": brdf_scene("missing.grd"), "b.sl": BRDF_SHADER}, None,

@@ -165,11 +165,13 @@ bool FakeContext::CurrentFromSpace(const std::string& space, int, Imath::M44f* m
     return true;
 }
 
-bool FakeContext::Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                          const float* t, const float* dsdx, const float*, const float*,
-                          const float* dtdy, const uint8_t* active, float* out) {
+bool FakeContext::Texture(const std::string& name, int firstChannel, int channels,
+                          const TextureWrapModes& wrap, const float* s, const float* t,
+                          const float* dsdx, const float*, const float*, const float* dtdy,
+                          const uint8_t* active, float* out) {
     lastTexture = name;
     lastFirstChannel = firstChannel;
+    lastWrap = wrap;
     lastDsdx.assign(dsdx, dsdx + n_);
     lastDtdy.assign(dtdy, dtdy + n_);
     if (name == "missing.tx") return false;

@@ -96,9 +96,10 @@ class FakeContext : public ShadingContext {
         ++lightQueries;
         return lights;
     }
-    bool Texture(const std::string& name, int firstChannel, int channels, const float* s,
-                 const float* t, const float* dsdx, const float* dtdx, const float* dsdy,
-                 const float* dtdy, const uint8_t* active, float* out) override;
+    bool Texture(const std::string& name, int firstChannel, int channels,
+                 const TextureWrapModes& wrap, const float* s, const float* t, const float* dsdx,
+                 const float* dtdx, const float* dsdy, const float* dtdy, const uint8_t* active,
+                 float* out) override;
     bool Environment(const std::string& name, int firstChannel, int channels,
                      const float* directions, const uint8_t* active, float* out) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
@@ -136,6 +137,7 @@ class FakeContext : public ShadingContext {
     // Texture records: the last lookup's arguments; the texture is s + 10·t + 100·channel.
     std::string lastTexture;
     int lastFirstChannel = -1;
+    TextureWrapModes lastWrap;
     std::vector<float> lastDsdx, lastDtdy;
 };
 

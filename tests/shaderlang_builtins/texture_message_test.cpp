@@ -40,6 +40,28 @@ TEST(TextureBuiltins, DefaultCoordinatesComeFromTheGlobals) {
     EXPECT_NEAR(call.R(0, 1), 1.5f, 1e-6f);
 }
 
+// PRMan's "swrap", "twrap" and "wrap" parameters reach the context as wrap modes; "wrap" sets
+// both, a later "twrap" overrides it; an unknown mode is warned about and leaves the file's.
+TEST(TextureBuiltins, WrapParametersReachTheContext) {
+    FakeContext context(1);
+    TestCall call(1);
+    call.String("a.tx").Float(0.5f).Float(0.5f).String("wrap").String("periodic");
+    call.String("twrap").String("clamp").Result(TypeFromCode("f"), true).Context(&context);
+    call.Run(FindKernel("texture", "f", "s*"));
+    EXPECT_EQ(context.lastWrap.s, TextureWrap::Periodic);
+    EXPECT_EQ(context.lastWrap.t, TextureWrap::Clamp);
+    EXPECT_TRUE(context.warnings.empty());
+
+    TestCall unknown(1);
+    unknown.String("a.tx").Float(0.5f).Float(0.5f).String("swrap").String("mirrorball");
+    unknown.String("twrap").String("black").Result(TypeFromCode("f"), true).Context(&context);
+    unknown.Run(FindKernel("texture", "f", "s*"));
+    EXPECT_EQ(context.lastWrap.s, TextureWrap::Default);
+    EXPECT_EQ(context.lastWrap.t, TextureWrap::Black);
+    ASSERT_EQ(context.warnings.size(), 1u);
+    EXPECT_NE(context.warnings.begin()->second.find("\"swrap\" \"mirrorball\""), std::string::npos);
+}
+
 // The context knows why a file cannot be read and reports it (render_imager checks the
 // message); the built-in adds no second warning.
 TEST(TextureBuiltins, MissingTextureIsBlackAndTheContextReportsIt) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "renderer/frame/frame_renderer.h"
+#include "renderer/image/texture_making.h"
 #include "renderer/rib/rib_parser.h"
 #include "renderer/scene/scene_file.h"
 #include "tests/support/captured_diagnostics.h"
@@ -28,7 +29,8 @@ inline RibRenderResult RenderRibString(const std::string& rib, const std::string
             [&](const Frame& frame) {
                 RenderStats stats;
                 RenderFrame(frame, RenderSettings{}, diagnostics, &stats);
-            });
+            },
+            [&](const TextureRequest& request) { MakeRequestedTexture(request, diagnostics); });
         result.errors = diagnostics.ErrorCount();
     }
     result.messages = captured.Text();
