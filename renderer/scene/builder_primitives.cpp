@@ -331,11 +331,6 @@ void SceneBuilder::MakeCubeFaceEnvironment(const std::vector<std::string>&, cons
     IgnoredRequest("MakeCubeFaceEnvironment (use maketx)", loc);
 }
 
-void SceneBuilder::MakeShadow(const std::string&, const std::string&, const ParamList&,
-                              const FileLoc& loc) {
-    IgnoredRequest("MakeShadow (shadows are ray traced)", loc);
-}
-
 void SceneBuilder::ErrorHandler(const std::string& handler, const FileLoc& loc) {
     if (handler != "print" && handler != "ignore" && handler != "abort") {
         diagnostics_.Error(loc, "ErrorHandler must be \"print\", \"ignore\" or \"abort\", got \"" +

@@ -7,8 +7,9 @@
 // (s1, t1, ..., s4, t4); texture("name") reads the globals s and t.
 // environment takes D or D1..D4, shadow P or P1..P4 (four are averaged). Then come optional
 // ("name", value) pairs: "width"/"swidth"/"twidth" scale the filter footprint, "blur"/"sblur"/
-// "tblur" widen it by a fraction of the texture; "filter", "fill", "samples" and "bias" are
-// accepted and left to the renderer's defaults.
+// "tblur" widen it by a fraction of the texture; "filter" and "fill" are accepted and left to
+// the renderer's defaults. shadow() passes "samples", the widths, the blurs and "bias" to the
+// renderer's percentage-closer filter (ShadowOptions).
 
 #include <algorithm>
 #include <cmath>
@@ -181,13 +182,30 @@ void EnvironmentKernel(const BuiltinCall& call) {
     CopyOut(call, out);
 }
 
+ShadowOptions ParseShadowOptions(const BuiltinCall& call, int first) {
+    const TextureOptions footprint = ParseOptions(call, first);
+    ShadowOptions o;
+    o.swidth = footprint.swidth, o.twidth = footprint.twidth;
+    o.sblur = footprint.sblur, o.tblur = footprint.tblur;
+    for (int a = first; a + 1 < call.argCount; a += 2) {
+        if (call.argTypes[a].base != BaseType::String || !call.strings[a].data) continue;
+        if (call.argTypes[a + 1].base != BaseType::Float) continue;
+        const std::string& name = call.strings[a].data[0];
+        if (name == "samples") o.samples = Float(call.args[a + 1], 0);
+        if (name == "bias") o.bias = Float(call.args[a + 1], 0);
+    }
+    return o;
+}
+
 void ShadowKernel(const BuiltinCall& call) {
     const int n = call.n;
     const TextureName name = ReadTextureName(call);
     const int coords = CoordinateArgCount(call);
     std::vector<float> points = MeanTriple(call, coords >= 4 ? 4 : 1);
+    const ShadowOptions options = ParseShadowOptions(call, 1 + coords);
     std::vector<float> out(n, 0.0f);
-    if (call.context) call.context->Shadow(name.file, points.data(), call.active, out.data());
+    if (call.context)
+        call.context->Shadow(name.file, points.data(), call.active, options, out.data());
     ForEachPoint(call, [&](int p) {
         for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = out[p];
     });
