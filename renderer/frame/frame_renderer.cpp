@@ -361,13 +361,13 @@ std::vector<DisplaySpec> Displays(const Frame& frame, const RenderSettings& sett
     const std::vector<double> channelWavelengths =
         frame.options.colorFromSamples.empty() ? frame.options.wavelengths : std::vector<double>();
     for (const DisplayRequest& d : frame.options.displays)
-        displays.push_back({d.name, d.type, d.mode, d.params, d.loc, channelWavelengths});
+        displays.push_back({d.name, d.type, d.mode, d.params, d.loc, channelWavelengths, {}, {}});
     if (displays.empty()) {
         // RISpec's default display is the framebuffer; we have none, so name a file after the
         // scene.
         std::string stem = std::filesystem::path(frame.sceneFile).stem().string();
         if (stem.empty() || stem == "-") stem = "gonio";
-        displays.push_back({stem + ".tif", "file", "rgba", {}, FileLoc{}, {}});
+        displays.push_back({stem + ".tif", "file", "rgba", {}, FileLoc{}, {}, {}, {}});
         if (settings.outputOverride.empty())
             diagnostics.NoteOnce("no display", FileLoc{},
                                  "no Display given: writing " + displays.back().name);

@@ -153,6 +153,7 @@ class RenderContext : public sl::ShadingContext {
     const RayScene& scene_;
     const Camera& camera_;
     NamedTextures textures_;
+    ShadowMapCache& shadowMaps_;  // the render's, shared by all threads
     sl::ShaderExecutor& lightExecutor_;
     RayTracer& tracer_;
     int depth_;
@@ -167,8 +168,7 @@ class RenderContext : public sl::ShadingContext {
     std::vector<sl::LightResult> movedLights_;  // LightsAt's, per call
     std::vector<uint8_t> mainActive_;
     bool lightsValid_ = false;
-    AreaLightPoints areaPoints_;  // the running area light's sample points
-    ShadowMapCache& shadowMaps_;
+    AreaLightPoints areaPoints_;     // the running area light's sample points
     bool runningLight_ = false;      // a light shader is running (Shadow's fallback)
     bool shadowMapMissing_ = false;  // ... and asked for a shadow map that cannot be read
     std::vector<int> noNeighbours_;

@@ -47,7 +47,9 @@ TEST(ShadowMap, BlurredEdgeGivesTheFractionOfTheRegionBehindIt) {
             const float got = map.Occlusion(AtS(s), 0, filter, seed);
             // Only the column of strata the edge crosses can differ from the exact fraction.
             EXPECT_NEAR(got, want, 1.0f / 16) << "s " << s << " seed " << seed;
-            if (want == 0 || want == 1) EXPECT_EQ(got, want) << "s " << s;
+            if (want == 0 || want == 1) {
+                EXPECT_EQ(got, want) << "s " << s;
+            }
         }
     }
 }
