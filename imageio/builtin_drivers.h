@@ -18,9 +18,17 @@ std::string WritePngFile(const std::string& path, const ImageFileSpec& spec,
                          const PixelBuffer& pixels);
 std::string WriteExrFile(const std::string& path, const ImageFileSpec& spec,
                          const PixelBuffer& pixels);
-// Pixar's depth file: one float channel and two matrices (identity: gonio records none).
+// Pixar's depth file: one float channel and the spec's two matrices (identity where it has none).
 std::string WriteZfileFile(const std::string& path, const ImageFileSpec& spec,
                            const PixelBuffer& pixels);
+
+// Readers of the depth maps MakeShadow and shadow() take (depth_map_file.h), "" or the reason.
+// Whether the first 4 bytes of a file are the zfile magic number (either byte order).
+bool IsZfileMagic(const unsigned char bytes[4]);
+std::string ReadZfileFile(const std::string& path, ImageFileContents* contents);
+// A TIFF of one 32-bit float channel (tiff_reader.cpp), strips or tiles, with Pixar's matrix
+// tags where it has them; any other TIFF is refused, saying what it holds.
+std::string ReadFloatTiffFile(const std::string& path, ImageFileContents* contents);
 
 // "YYYY:MM:DD hh:mm:ss" in local time, the DateTime OpenImageIO records in TIFF and OpenEXR, or
 // $SOURCE_DATE_EPOCH in UTC when that is set.

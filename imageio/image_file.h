@@ -27,6 +27,11 @@ struct ImageFileSpec {
     std::string compression;
     // String metadata, in order: "Software", "ImageDescription", "spectralLayoutVersion", ...
     std::vector<std::pair<std::string, std::string>> attributes;
+    // The camera a depth map was rendered from, as Pixar's zfile and shadow-map TIFF record it
+    // (OpenImageIO's "worldtocamera" and "worldtoscreen"): 16 floats each, row-major, for row
+    // vectors (p · M, as RenderMan writes matrices); screen space with the frame's screen window
+    // mapped to [-1, 1]². Empty: the file records none.
+    std::vector<float> worldToCamera, worldToScreen;
 
     int Channels() const { return int(channelNames.size()); }
     int FullWidth() const { return fullWidth > 0 ? fullWidth : width; }

@@ -69,8 +69,15 @@ void SetMetadata(TIFF* tif, const ImageFileSpec& spec) {
         if (name == "Artist") TIFFSetField(tif, TIFFTAG_ARTIST, value.c_str());
         if (name == "Copyright") TIFFSetField(tif, TIFFTAG_COPYRIGHT, value.c_str());
         if (name == "DateTime") TIFFSetField(tif, TIFFTAG_DATETIME, value.c_str()), dated = true;
+        if (name == "textureformat")  // "Shadow" for a shadow map, as maketx records it
+            TIFFSetField(tif, TIFFTAG_PIXAR_TEXTUREFORMAT, value.c_str());
     }
     if (!dated) TIFFSetField(tif, TIFFTAG_DATETIME, CurrentDateTime().c_str());
+    // Pixar's matrix tags, which OpenImageIO reads back as "worldtoscreen" and "worldtocamera".
+    if (spec.worldToScreen.size() == 16)
+        TIFFSetField(tif, TIFFTAG_PIXAR_MATRIX_WORLDTOSCREEN, spec.worldToScreen.data());
+    if (spec.worldToCamera.size() == 16)
+        TIFFSetField(tif, TIFFTAG_PIXAR_MATRIX_WORLDTOCAMERA, spec.worldToCamera.data());
 }
 
 // libtiff reports errors through a global handler; the last one is kept for the caller.

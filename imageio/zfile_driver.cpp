@@ -1,11 +1,14 @@
 // Pixar's zfile depth format, as OpenImageIO 2.4 writes it: a 136-byte header (magic, width and
 // height as 16-bit integers, the world-to-screen and world-to-camera matrices) and the float
 // depths row by row, all in the machine's byte order; gzip-compressed unless "compression" is
-// "none" or absent.
+// "none" or absent. Read back (plain or gzip-compressed, either byte order) for MakeShadow.
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <memory>
 
 #include "imageio/builtin_drivers.h"
@@ -22,7 +25,68 @@ struct ZfileHeader {
 };
 static_assert(sizeof(ZfileHeader) == 136, "the zfile header has no padding");
 
+constexpr int32_t kZfileMagic = 0x2f0867ab;
+
+template <typename T>
+void SwapBytes(T* value) {
+    unsigned char bytes[sizeof(T)];
+    std::memcpy(bytes, value, sizeof(T));
+    std::reverse(bytes, bytes + sizeof(T));
+    std::memcpy(value, bytes, sizeof(T));
+}
+
+// A file written on a machine of the other byte order: every field and depth is swapped.
+void SwapHeader(ZfileHeader* header) {
+    SwapBytes(&header->magic);
+    SwapBytes(&header->width);
+    SwapBytes(&header->height);
+    for (float& v : header->worldToScreen) SwapBytes(&v);
+    for (float& v : header->worldToCamera) SwapBytes(&v);
+}
+
 }  // namespace
+
+bool IsZfileMagic(const unsigned char bytes[4]) {
+    int32_t magic;
+    std::memcpy(&magic, bytes, 4);
+    int32_t swapped = magic;
+    SwapBytes(&swapped);
+    return magic == kZfileMagic || swapped == kZfileMagic;
+}
+
+std::string ReadZfileFile(const std::string& path, ImageFileContents* contents) {
+    // gzread reads plain files as they are, so one reader serves both.
+    std::unique_ptr<gzFile_s, int (*)(gzFile)> file(gzopen(path.c_str(), "rb"), gzclose);
+    if (!file) return "cannot open \"" + path + "\"";
+    ZfileHeader header;
+    if (gzread(file.get(), &header, sizeof header) != int(sizeof header))
+        return "\"" + path + "\" is too short for a zfile header";
+    const bool swapped = header.magic != kZfileMagic;
+    if (swapped) SwapHeader(&header);
+    if (header.magic != kZfileMagic) return "\"" + path + "\" is not a zfile (bad magic number)";
+    if (header.width <= 0 || header.height <= 0)
+        return "\"" + path + "\" has a zfile resolution of " + std::to_string(header.width) +
+               " x " + std::to_string(header.height);
+    ImageFileSpec& spec = contents->spec;
+    spec = ImageFileSpec();
+    spec.width = header.width, spec.height = header.height;
+    spec.channelNames = {"z"};
+    spec.zChannel = 0;
+    spec.fileType = PixelType::Float;
+    spec.worldToScreen.assign(header.worldToScreen, header.worldToScreen + 16);
+    spec.worldToCamera.assign(header.worldToCamera, header.worldToCamera + 16);
+    const size_t count = size_t(spec.width) * spec.height;
+    if (count * sizeof(float) > size_t(std::numeric_limits<int>::max()))
+        return "\"" + path + "\" is too large for a zfile reader (over 2 GB of depths)";
+    contents->pixels.resize(count);
+    const int bytes = int(count * sizeof(float));
+    if (gzread(file.get(), contents->pixels.data(), unsigned(bytes)) != bytes)
+        return "\"" + path + "\" is truncated: fewer depths than its " +
+               std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels";
+    if (swapped)
+        for (float& z : contents->pixels) SwapBytes(&z);
+    return "";
+}
 
 std::string WriteZfileFile(const std::string& path, const ImageFileSpec& spec,
                            const PixelBuffer& pixels) {
@@ -34,6 +98,10 @@ std::string WriteZfileFile(const std::string& path, const ImageFileSpec& spec,
     if (pixels.type != PixelType::Float) return "zfiles are written from float pixels";
     ZfileHeader header;
     header.width = int16_t(spec.width), header.height = int16_t(spec.height);
+    if (spec.worldToScreen.size() == 16)
+        std::copy(spec.worldToScreen.begin(), spec.worldToScreen.end(), header.worldToScreen);
+    if (spec.worldToCamera.size() == 16)
+        std::copy(spec.worldToCamera.begin(), spec.worldToCamera.end(), header.worldToCamera);
     const size_t bytes = size_t(spec.width) * spec.height * sizeof(float);
     const bool gzip = !spec.compression.empty() && spec.compression != "none";
     bool ok = false;

@@ -32,7 +32,8 @@ bool ShadingContext::Environment(const std::string& name, int, int channels, con
     return Unavailable("environment(\"" + name + "\")", channels, out);
 }
 
-bool ShadingContext::Shadow(const std::string& name, const float*, const uint8_t*, float* out) {
+bool ShadingContext::Shadow(const std::string& name, const float*, const uint8_t*,
+                            const ShadowOptions&, float* out) {
     return Unavailable("shadow(\"" + name + "\")", 1, out);
 }
 

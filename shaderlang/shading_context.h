@@ -80,6 +80,16 @@ struct LightResult {
     }
 };
 
+// shadow()'s optional parameters (RISpec §15.7.3, with PRMan's and Pixie's names), uniform per
+// call: "samples", "width"/"swidth"/"twidth" (scale the point's footprint in the map),
+// "blur"/"sblur"/"tblur" (add to the filter region, as fractions of the map) and "bias" (depth
+// offset; negative: the renderer's default).
+struct ShadowOptions {
+    float samples = 16;
+    float swidth = 1, twidth = 1, sblur = 0, tblur = 0;
+    float bias = -1;
+};
+
 // Rays that occlusion(), indirectdiffuse(), gather(), transmission() and visibility() sample
 // (builtins_raytrace.cpp): `count` rays, each from org along dir, in current space.
 struct SampledRays {
@@ -146,8 +156,10 @@ class ShadingContext {
     virtual bool Environment(const std::string& name, int firstChannel, int channels,
                              const float* directions /* 3 × n */, const uint8_t* active,
                              float* out);
+    // shadow(): the fraction of each point in shadow in the shadow map `name` (0 lit, 1 in
+    // shadow), filtered as `options` say.
     virtual bool Shadow(const std::string& name, const float* points /* 3 × n */,
-                        const uint8_t* active, float* out /* n */);
+                        const uint8_t* active, const ShadowOptions& options, float* out /* n */);
 
     // The file a texture-like name refers to (texture(), environment(), brdf()), looked up on
     // the renderer's texture search path; the name itself where there is no such path.

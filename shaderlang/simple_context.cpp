@@ -54,7 +54,8 @@ void SimpleShadingContext::RunLights(const float* P, std::vector<LightResult>* r
     }
 }
 
-bool SimpleShadingContext::Shadow(const std::string&, const float*, const uint8_t*, float* out) {
+bool SimpleShadingContext::Shadow(const std::string&, const float*, const uint8_t*,
+                                  const ShadowOptions&, float* out) {
     std::fill_n(out, size_t(n_), 0.0f);  // unshadowed
     return false;
 }

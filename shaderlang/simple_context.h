@@ -29,7 +29,7 @@ class SimpleShadingContext : public ShadingContext {
     const std::vector<LightResult>& Lights() override;
     const std::vector<LightResult>& LightsAt(const float* P, const uint8_t* active) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
-                float* out) override;
+                const ShadowOptions& options, float* out) override;
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
     void RuntimeWarning(const std::string& key, const std::string& message) override;
     void Print(const std::string& text) override;

@@ -361,13 +361,13 @@ std::vector<DisplaySpec> Displays(const Frame& frame, const RenderSettings& sett
     const std::vector<double> channelWavelengths =
         frame.options.colorFromSamples.empty() ? frame.options.wavelengths : std::vector<double>();
     for (const DisplayRequest& d : frame.options.displays)
-        displays.push_back({d.name, d.type, d.mode, d.params, d.loc, channelWavelengths});
+        displays.push_back({d.name, d.type, d.mode, d.params, d.loc, channelWavelengths, {}, {}});
     if (displays.empty()) {
         // RISpec's default display is the framebuffer; we have none, so name a file after the
         // scene.
         std::string stem = std::filesystem::path(frame.sceneFile).stem().string();
         if (stem.empty() || stem == "-") stem = "gonio";
-        displays.push_back({stem + ".tif", "file", "rgba", {}, FileLoc{}, {}});
+        displays.push_back({stem + ".tif", "file", "rgba", {}, FileLoc{}, {}, {}, {}});
         if (settings.outputOverride.empty())
             diagnostics.NoteOnce("no display", FileLoc{},
                                  "no Display given: writing " + displays.back().name);
@@ -425,6 +425,30 @@ bool FilmFitsInMemory(const FilmSpec& spec, const PixelFilter& filter, const Opt
     return false;
 }
 
+std::vector<float> RowMajor(const Imath::M44f& m) {
+    std::vector<float> values(16);
+    for (int i = 0; i < 16; ++i) values[i] = m[i / 4][i % 4];
+    return values;
+}
+
+// The camera as zfile and shadow displays record it (image_writer.h): world to camera, and
+// world to screen with the screen window mapped to [-1, 1]², so that a map's lookup finds its
+// pixel from the matrix alone, whatever the window was.
+void RecordCamera(const Camera& camera, std::vector<DisplaySpec>* displays) {
+    const float* w = camera.ScreenWindow();  // left right bottom top
+    const float sx = 2 / (w[1] - w[0]), sy = 2 / (w[3] - w[2]);
+    const Imath::M44f unitFromScreen(sx, 0, 0, 0, 0, sy, 0, 0, 0, 0, 1, 0,
+                                     -(w[0] + w[1]) / (w[1] - w[0]), -(w[2] + w[3]) / (w[3] - w[2]),
+                                     0, 1);
+    const Imath::M44f cameraFromWorld = camera.WorldFromCamera().inverse();
+    const Imath::M44f unitScreenFromWorld =
+        cameraFromWorld * camera.ScreenFromCamera() * unitFromScreen;
+    for (DisplaySpec& display : *displays) {
+        display.worldToCamera = RowMajor(cameraFromWorld);
+        display.worldToScreen = RowMajor(unitScreenFromWorld);
+    }
+}
+
 }  // namespace
 
 bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics& diagnostics,
@@ -436,7 +460,8 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
 
     const int xsamples = std::max(1, int(std::lround(options.xsamples)));
     const int ysamples = std::max(1, int(std::lround(options.ysamples)));
-    const std::vector<DisplaySpec> displays = Displays(frame, settings, diagnostics);
+    std::vector<DisplaySpec> displays = Displays(frame, settings, diagnostics);
+    RecordCamera(camera, &displays);
     std::vector<std::string> channelNames = {"r", "g", "b", "a", "z"};
     // The path tracer reads the shaders itself; the frame loop's shading is then unused.
     const std::unique_ptr<PathIntegrator> paths =

@@ -40,14 +40,15 @@ std::string ChooseFormat(const DisplaySpec& display, Diagnostics& diagnostics) {
     std::string type = Lowercase(display.type);
     if (type == "openexr" || type == "exr") return "openexr";
     if (type == "png") return "png";
+    if (type == "zfile") return "zfile";
+    if (type == "shadow") return "tiff";
     const std::string byExtension = FormatForFileName(display.name);
     if (type == "framebuffer" || type == "zframebuffer")
         diagnostics.NoteOnce("display-framebuffer", display.loc,
                              "Display type \"" + display.type +
                                  "\": gonio has no window to show images in; writing the file \"" +
                                  display.name + "\" instead");
-    if (type == "file" || type == "tiff" || type == "framebuffer" || type == "zframebuffer" ||
-        type == "zfile" || type == "shadow")
+    if (type == "file" || type == "tiff" || type == "framebuffer" || type == "zframebuffer")
         return byExtension.empty() ? "tiff" : byExtension;
     diagnostics.WarningOnce(
         "display-type-" + type, display.loc,
@@ -248,6 +249,19 @@ ImageFileSpec MakeFileSpec(const Image& image, const std::vector<OutputChannel>&
     return spec;
 }
 
+// A "zfile" or "shadow" display: one depth channel, and the camera it was seen from.
+bool IsDepthMapDisplay(const DisplaySpec& display) {
+    const std::string type = Lowercase(display.type);
+    return type == "zfile" || type == "shadow";
+}
+
+void RecordCamera(const DisplaySpec& display, ImageFileSpec* spec) {
+    spec->worldToCamera = display.worldToCamera;
+    spec->worldToScreen = display.worldToScreen;
+    if (Lowercase(display.type) == "shadow")
+        spec->attributes.emplace_back("textureformat", "Shadow");
+}
+
 }  // namespace
 
 std::vector<int> SelectDisplayChannels(const std::string& mode,
@@ -338,6 +352,11 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     std::string error;
     std::vector<OutputChannel> channels = SelectOutputChannels(display.mode, channelNames, error);
     if (channels.empty()) return fail(error);
+    if (IsDepthMapDisplay(display) &&
+        (channels.size() != 1 || channels[0].kind != ChannelKind::Depth))
+        return fail("a \"" + display.type +
+                    "\" display writes depth: its mode must be \"z\", not \"" + display.mode +
+                    "\"");
 
     std::string format;
     try {
@@ -347,7 +366,10 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     }
     if (display.mode == "spectral" && !NameSpectralChannels(display, format, channels, &error))
         return fail(error);
-    StorageChoice type = ChooseStorage(display, format, channels, colour, depth, diagnostics);
+    // A depth map's depths are floats whatever Quantize "z" says: they are compared, not shown.
+    const Quantization& depthCodes =
+        IsDepthMapDisplay(display) ? DefaultDepthQuantization() : depth;
+    StorageChoice type = ChooseStorage(display, format, channels, colour, depthCodes, diagnostics);
     display.params.MarkRead("origin");  // accepted: a window position only a framebuffer uses
     PixelData data =
         ComputePixels(image, channels, exposure, type.colour, type.depth, type.isFloat);
@@ -361,6 +383,7 @@ bool WriteDisplay(const DisplaySpec& display, const Image& image,
     }
     ImageFileSpec spec =
         MakeFileSpec(image, channels, type.half ? PixelType::Half : data.type, display.params);
+    if (IsDepthMapDisplay(display)) RecordCamera(display, &spec);
     if (display.mode == "spectral") {
         spec.attributes.emplace_back("spectralLayoutVersion", "1.0");
         spec.attributes.emplace_back("emissiveUnits", "W.m^-2.sr^-1");

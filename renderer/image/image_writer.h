@@ -5,10 +5,13 @@
 // (loaded only then) for any other format.
 //
 // Choices made here (see README.md):
-//  * Display types "file", "tiff", "framebuffer" (with a one-time note: there is no window to
-//    show, so the image goes to the named file), "zfile" and "shadow" write TIFF unless the file
-//    name's extension names another format; "openexr"/"exr" write OpenEXR, "png" PNG. Any other
-//    type follows the extension, with a warning.
+//  * Display types "file", "tiff" and "framebuffer" (with a one-time note: there is no window to
+//    show, so the image goes to the named file) write TIFF unless the file name's extension
+//    names another format; "openexr"/"exr" write OpenEXR, "png" PNG. Any other type follows the
+//    extension, with a warning.
+//  * Depth maps, as PRMan and Pixie write them whatever the file's name: "zfile" writes Pixar's
+//    zfile, "shadow" a shadow map (a float TIFF tagged "Shadow", imageio/depth_map_file.h). Both
+//    take mode "z" only and record the camera's world-to-camera and world-to-screen matrices.
 //  * Crop windows: only the window's pixels are written, with the data window's origin set to
 //    the window's place in the frame and the display window set to the full Format (as Aqsis
 //    does for TIFF). Formats without data windows (PNG) keep just the window's pixels.
@@ -40,6 +43,9 @@ struct DisplaySpec {
     FileLoc loc;
     // The frame's wavelengths (Option "spectral"), which mode "spectral" writes as channels.
     std::vector<double> wavelengths;
+    // The camera's matrices (ImageFileSpec's worldToCamera, worldToScreen), which "zfile" and
+    // "shadow" displays record; empty elsewhere.
+    std::vector<float> worldToCamera, worldToScreen;
 };
 
 // Quantize "rgba"|"z" one min max ditheramplitude. one = 0 means float output.

@@ -330,11 +330,6 @@ void SceneBuilder::Procedural(const std::string& name, const std::vector<std::st
 
 // ---- shadow maps: not a renderer's job here -------------------------------------------------
 
-void SceneBuilder::MakeShadow(const std::string&, const std::string&, const ParamList&,
-                              const FileLoc& loc) {
-    IgnoredRequest("MakeShadow (shadows are ray traced)", loc);
-}
-
 void SceneBuilder::ErrorHandler(const std::string& handler, const FileLoc& loc) {
     if (handler != "print" && handler != "ignore" && handler != "abort") {
         diagnostics_.Error(loc, "ErrorHandler must be \"print\", \"ignore\" or \"abort\", got \"" +

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
+#include "base/hash.h"
 #include "renderer/raytrace/shadow_transmission.h"
 #include "renderer/shading/option_query.h"
 #include "renderer/shading/shading_files.h"
@@ -24,6 +26,7 @@ RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
       scene_(scene),
       camera_(camera),
       textures_(textures, shaders.TextureSearchPath()),
+      shadowMaps_(textures.shadowMaps),
       lightExecutor_(lightExecutor),
       tracer_(tracer),
       depth_(depth),
@@ -158,7 +161,7 @@ void RenderContext::EvaluateLights(const float* P, const uint8_t* active,
 sl::LightResult RenderContext::RunLight(int index, const FrameLight& light,
                                         const sl::ShaderGlobals& globals, const uint8_t* active) {
     sl::LightResult result;
-    shadowMapCalled_ = false;
+    shadowMapMissing_ = false;
     runningLight_ = true;
     lightExecutor_.RunLight(*light.instance, globals, *this, &result);
     runningLight_ = false;
@@ -169,8 +172,8 @@ sl::LightResult RenderContext::RunLight(int index, const FrameLight& light,
     if (light.area)
         for (int c = 0; c < colorComponents_; ++c)
             for (int i = 0; i < n_; ++i) result.Cl[c * size_t(n_) + i] *= areaPoints_.weight[i];
-    // A light that asked for a shadow map is shadowed by rays instead (see Shadow).
-    if ((light.castsShadows || shadowMapCalled_) && !result.ambient) TraceShadows(&result);
+    // A light whose shadow map cannot be read is shadowed by rays instead (see Shadow).
+    if ((light.castsShadows || shadowMapMissing_) && !result.ambient) TraceShadows(&result);
     return result;
 }
 
@@ -252,20 +255,51 @@ bool RenderContext::TextureInfo(const std::string& name, const std::string& data
     return true;
 }
 
-// gonio makes no shadow maps (MakeShadow is ignored): a light shader's shadow("map", Ps) sees
-// nothing in the way (0), and the light's Cl is shadowed by rays towards the light instead,
-// which is what 1 − shadow() multiplies it by in the standard shadowspot, shadowpoint and
-// shadowdistant. Outside a light shader there is no light to trace towards.
-bool RenderContext::Shadow(const std::string& name, const float*, const uint8_t*, float* out) {
+// shadow("map", P): percentage-closer filtering of the map (renderer/image/shadow_map.h) over
+// the point's footprint, a camera pixel's width at P (the light runs for the main points only,
+// so no derivative of Ps is at hand). A map that cannot be read gives 0 (nothing in the way)
+// with a warning once; inside a light shader the light's Cl is then shadowed by rays towards L
+// instead, which is what 1 − shadow() multiplies it by in shadowspot, shadowpoint and
+// shadowdistant (docs/shading-language.md, Shadow maps).
+bool RenderContext::Shadow(const std::string& name, const float* points, const uint8_t* active,
+                           const sl::ShadowOptions& options, float* out) {
     std::fill(out, out + n_, 0.f);
-    if (runningLight_) {
-        shadowMapCalled_ = true;
-        return true;
+    if (name.empty()) return true;
+    std::string why;
+    const std::shared_ptr<const ShadowMap> map = shadowMaps_.Get(textures_.Find(name), &why);
+    if (!map) {
+        shadowMapMissing_ |= runningLight_;
+        RuntimeWarning("shadow map " + name,
+                       "shadow(\"" + name + "\"): " + why +
+                           (runningLight_ ? "; the light is shadowed by traced rays instead"
+                                          : "; outside a light shader nothing is shadowed"));
+        return false;
     }
-    RuntimeWarning("shadow map", "shadow(\"" + name +
-                                     "\") outside a light shader: shadow maps are not made, "
-                                     "and there is no light to trace shadow rays towards");
-    return false;
+    ShadowFilter filter;
+    filter.samples = int(std::clamp(options.samples, 1.f, 4096.f));
+    filter.swidth = options.swidth, filter.twidth = options.twidth;
+    filter.sblur = options.sblur, filter.tblur = options.tblur;
+    filter.bias = options.bias;
+    V3f unitStep;
+    worldFromCurrent_.multDirMatrix(V3f(1, 0, 0), unitStep);
+    const float worldUnit = unitStep.length();
+    for (int i = 0; i < n_; ++i) {
+        if (active && !active[i]) continue;
+        const V3f P = ToV3(points, n_, i);
+        V3f world;
+        worldFromCurrent_.multVecMatrix(P, world);
+        // A camera pixel's width, in world units as the map measures them.
+        const float footprint = PixelWidth(P) * worldUnit;
+        out[i] = map->Occlusion(world, footprint, filter, ShadowSeed(i, P));
+    }
+    return true;
+}
+
+uint64_t RenderContext::ShadowSeed(int i, const V3f& P) const {
+    if (batch_->randomSeeds.size() >= size_t(n_)) return MixBits(batch_->randomSeeds[i] ^ 0x5ad0);
+    uint32_t bits[3];
+    std::memcpy(bits, &P, sizeof bits);
+    return HashCombine(HashCombine(MixBits(bits[0]), bits[1]), bits[2]);
 }
 
 bool RenderContext::WorldRay(const float* P, const float* R, int i, V3f* org, V3f* dir) const {

@@ -92,7 +92,7 @@ class RenderContext : public sl::ShadingContext {
     bool Environment(const std::string& name, int firstChannel, int channels,
                      const float* directions, const uint8_t* active, float* out) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
-                float* out) override;
+                const sl::ShadowOptions& options, float* out) override;
     std::string FindTexture(const std::string& name) const override;
     bool MeasuredBrdf(const std::string& name, int count, const float* wIn, const float* wOut,
                       const uint8_t* active, float* out) override {
@@ -140,6 +140,8 @@ class RenderContext : public sl::ShadingContext {
                              const uint8_t* active);
     void ShareLightWithNeighbours(sl::LightResult* result) const;
     void TraceShadows(sl::LightResult* light);
+    // The seed of point i's shadow-map jitter: its random() stream's, else its position's.
+    uint64_t ShadowSeed(int i, const V3f& P) const;
     // The points whose lights and traced rays are computed (the rest share them).
     int MainCount() const { return neighbours_ ? neighbours_->mainCount : n_; }
     // Copies the main points' values to their neighbour points in `planes` planes of n floats.
@@ -152,6 +154,7 @@ class RenderContext : public sl::ShadingContext {
     const RayScene& scene_;
     const Camera& camera_;
     NamedTextures textures_;
+    ShadowMapCache& shadowMaps_;  // the render's, shared by all threads
     sl::ShaderExecutor& lightExecutor_;
     RayTracer& tracer_;
     int depth_;
@@ -166,9 +169,9 @@ class RenderContext : public sl::ShadingContext {
     std::vector<sl::LightResult> movedLights_;  // LightsAt's, per call
     std::vector<uint8_t> mainActive_;
     bool lightsValid_ = false;
-    AreaLightPoints areaPoints_;    // the running area light's sample points
-    bool runningLight_ = false;     // a light shader is running (Shadow's fallback)
-    bool shadowMapCalled_ = false;  // ... and it called shadow()
+    AreaLightPoints areaPoints_;     // the running area light's sample points
+    bool runningLight_ = false;      // a light shader is running (Shadow's fallback)
+    bool shadowMapMissing_ = false;  // ... and asked for a shadow map that cannot be read
     std::vector<int> noNeighbours_;
     M44f worldFromCurrent_;
     sl::MessageShaders messageShaders_;

@@ -9,8 +9,9 @@
 // ("name", value) pairs: "width"/"swidth"/"twidth" scale the filter footprint, "blur"/"sblur"/
 // "tblur" widen it by a fraction of the texture; "swrap"/"twrap"/"wrap" (PRMan's names) say how
 // texture() reads s and t outside [0, 1] ("black", "clamp", "periodic"; by default as the file
-// records); "filter", "fill", "samples" and "bias" are accepted and left to the renderer's
-// defaults.
+// records); "filter" and "fill" are accepted and left to the renderer's defaults. shadow()
+// passes "samples", the widths, the blurs and "bias" to the renderer's percentage-closer
+// filter (ShadowOptions).
 
 #include <algorithm>
 #include <cmath>
@@ -210,13 +211,30 @@ void EnvironmentKernel(const BuiltinCall& call) {
     CopyOut(call, out);
 }
 
+ShadowOptions ParseShadowOptions(const BuiltinCall& call, int first) {
+    const TextureOptions footprint = ParseOptions(call, first);
+    ShadowOptions o;
+    o.swidth = footprint.swidth, o.twidth = footprint.twidth;
+    o.sblur = footprint.sblur, o.tblur = footprint.tblur;
+    for (int a = first; a + 1 < call.argCount; a += 2) {
+        if (call.argTypes[a].base != BaseType::String || !call.strings[a].data) continue;
+        if (call.argTypes[a + 1].base != BaseType::Float) continue;
+        const std::string& name = call.strings[a].data[0];
+        if (name == "samples") o.samples = Float(call.args[a + 1], 0);
+        if (name == "bias") o.bias = Float(call.args[a + 1], 0);
+    }
+    return o;
+}
+
 void ShadowKernel(const BuiltinCall& call) {
     const int n = call.n;
     const TextureName name = ReadTextureName(call);
     const int coords = CoordinateArgCount(call);
     std::vector<float> points = MeanTriple(call, coords >= 4 ? 4 : 1);
+    const ShadowOptions options = ParseShadowOptions(call, 1 + coords);
     std::vector<float> out(n, 0.0f);
-    if (call.context) call.context->Shadow(name.file, points.data(), call.active, out.data());
+    if (call.context)
+        call.context->Shadow(name.file, points.data(), call.active, options, out.data());
     ForEachPoint(call, [&](int p) {
         for (int c = 0; c < call.result.width; ++c) call.result.At(c, p) = out[p];
     });

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <tuple>
+#include <vector>
 
 #include "tests/support/captured_diagnostics.h"
 #include "tests/support/test_folder.h"
@@ -237,7 +239,7 @@ TEST(WriteDisplay, ZModeWritesOneFloatChannel) {
     TempDir dir;
     CapturedDiagnostics diagnostics;
     std::string file = dir.File("depth.tif");
-    ASSERT_TRUE(WriteDisplay(Display(file, "zfile", "z"), TestImage(), kChannelNames, Exposure{},
+    ASSERT_TRUE(WriteDisplay(Display(file, "file", "z"), TestImage(), kChannelNames, Exposure{},
                              Quantization{}, DefaultDepthQuantization(), diagnostics.Get()));
     ReadBack back = Read(file);
     ASSERT_EQ(back.spec.nchannels, 1);
@@ -249,6 +251,38 @@ TEST(WriteDisplay, ZModeWritesOneFloatChannel) {
     ASSERT_TRUE(WriteDisplay(Display(exr, "openexr", "z"), TestImage(), kChannelNames, Exposure{},
                              Quantization{}, DefaultDepthQuantization(), diagnostics.Get()));
     EXPECT_EQ(Read(exr).spec.channelnames, std::vector<std::string>{"Z"});
+}
+
+// PRMan's and Pixie's depth-map displays write their format whatever the file is called, and
+// the camera's matrices with it; OpenImageIO reads them back as "worldtocamera" and
+// "worldtoscreen".
+TEST(WriteDisplay, ZfileAndShadowDisplaysRecordTheCamera) {
+    TempDir dir;
+    CapturedDiagnostics diagnostics;
+    const std::vector<float> toCamera = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 5, 1};
+    const std::vector<float> toScreen = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1, 1, 1, 0, 4, 5};
+    for (const auto& [type, name, format] :
+         {std::tuple{"zfile", "depth.tif", "zfile"}, std::tuple{"shadow", "light.sm", "tiff"}}) {
+        DisplaySpec display = Display(dir.File(name), type, "z");
+        display.worldToCamera = toCamera, display.worldToScreen = toScreen;
+        // Quantize "z" asks for 8 bits: a depth map keeps floats all the same.
+        ASSERT_TRUE(WriteDisplay(display, TestImage(), kChannelNames, Exposure{}, Quantization{},
+                                 Quantization{}, diagnostics.Get()));
+        ReadBack back = Read(display.name);
+        EXPECT_EQ(back.format, format);
+        ASSERT_EQ(back.spec.nchannels, 1);
+        EXPECT_FLOAT_EQ(back.pixels[2 * 5 + 3], 2.5f * 3 + 2);
+        float matrix[16];
+        ASSERT_TRUE(back.spec.getattribute("worldtocamera", OIIO::TypeMatrix, matrix)) << type;
+        EXPECT_EQ(std::vector<float>(matrix, matrix + 16), toCamera) << type;
+        ASSERT_TRUE(back.spec.getattribute("worldtoscreen", OIIO::TypeMatrix, matrix)) << type;
+        EXPECT_EQ(std::vector<float>(matrix, matrix + 16), toScreen) << type;
+    }
+    EXPECT_EQ(Read(dir.File("light.sm")).spec.get_string_attribute("textureformat"), "Shadow");
+    EXPECT_FALSE(WriteDisplay(Display(dir.File("x.sm"), "shadow", "rgb"), TestImage(),
+                              kChannelNames, Exposure{}, Quantization{}, Quantization{},
+                              diagnostics.Get()));
+    EXPECT_NE(diagnostics.Text().find("its mode must be \"z\""), std::string::npos);
 }
 
 TEST(WriteDisplay, AovModeWritesItsComponentsAsFloat) {

@@ -254,6 +254,23 @@ CASES = [
      {"s.rib": brdf_scene("x.grd"), "b.sl": BRDF_SHADER,
       "x.grd": ChangedGrd((WEIGHTS, "f", float("nan")))}, None,
      1, "frame 0 is not written: its shaders met the errors above", ["s.tif"]),
+    # MakeShadow of what is not a depth map: a located error, no shadow map (issue 20).
+    ("makeshadow_missing_input", ["render", "s.rib"],
+     {"s.rib": 'MakeShadow "nothere.z" "out.sm"\n' + scene("a.tif")}, None,
+     1, 's.rib:1:1: error: MakeShadow cannot make "out.sm": cannot open "nothere.z": No such file',
+     ["out.sm"]),
+    ("makeshadow_of_a_colour_image", ["render", "s.rib"],
+     {"s.rib": "FrameBegin 1\n" + scene("rgb.tif") + 'FrameEnd\nMakeShadow "rgb.tif" "out.sm"\n'},
+     None, 1, 's.rib:8:1: error: MakeShadow cannot make "out.sm": "rgb.tif" holds 4 channels of '
+     "8-bit integers; a depth map is one channel of 32-bit floats", ["out.sm"]),
+    ("makeshadow_of_text", ["render", "s.rib"],
+     {"s.rib": 'MakeShadow "notes.txt" "out.sm"\n' + scene("a.tif"), "notes.txt": "not a map\n"},
+     None, 1, 's.rib:1:1: error: MakeShadow cannot make "out.sm": "notes.txt" is neither a zfile '
+     "nor a TIFF depth map", ["out.sm"]),
+    ("makeshadow_of_a_truncated_zfile", ["render", "s.rib"],
+     {"s.rib": 'MakeShadow "cut.z" "out.sm"\n' + scene("a.tif"),
+      "cut.z": struct.pack("<ihh32f10f", 0x2f0867ab, 4, 4, *([0.0] * 42))},
+     None, 1, '"cut.z" is truncated: fewer depths than its 4 x 4 pixels', ["out.sm"]),
 ]
 
 

@@ -196,8 +196,9 @@ bool FakeContext::Environment(const std::string& name, int firstChannel, int cha
 }
 
 bool FakeContext::Shadow(const std::string& name, const float* points, const uint8_t* active,
-                         float* out) {
+                         const ShadowOptions& options, float* out) {
     lastTexture = name;
+    lastShadowOptions = options;
     for (int p = 0; p < n_; ++p) {
         if (!active || active[p]) out[p] = points[p] > 0.0f ? 1.0f : 0.0f;  // x > 0: shadowed
     }

@@ -103,7 +103,8 @@ class FakeContext : public ShadingContext {
     bool Environment(const std::string& name, int firstChannel, int channels,
                      const float* directions, const uint8_t* active, float* out) override;
     bool Shadow(const std::string& name, const float* points, const uint8_t* active,
-                float* out) override;
+                const ShadowOptions& options, float* out) override;
+    ShadowOptions lastShadowOptions;
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
     bool Attribute(const std::string& name, const TypeSpec& type, int point,
                    std::vector<float>* floats, std::string* text) const override;

@@ -82,9 +82,19 @@ TEST(TextureBuiltins, EnvironmentAndShadow) {
     TestCall shadow(2);
     shadow.String("shadow.z").Varying(TypeFromCode("p"), {{1, 0, 0}, {-1, 0, 0}});
     shadow.String("bias").Float(0.01f);
+    shadow.String("samples").Float(64);
+    shadow.String("blur").Float(0.125f);
+    shadow.String("twidth").Float(3);
     shadow.Result(TypeFromCode("f"), true).Context(&context).Run(FindKernel("shadow", "f", "s*"));
     EXPECT_EQ(shadow.R(0, 0), 1.0f);
     EXPECT_EQ(shadow.R(0, 1), 0.0f);
+    // The filter's parameters reach the renderer (RISpec §15.7.3, PRMan's names).
+    EXPECT_EQ(context.lastShadowOptions.bias, 0.01f);
+    EXPECT_EQ(context.lastShadowOptions.samples, 64.0f);
+    EXPECT_EQ(context.lastShadowOptions.sblur, 0.125f);
+    EXPECT_EQ(context.lastShadowOptions.tblur, 0.125f);
+    EXPECT_EQ(context.lastShadowOptions.swidth, 1.0f);
+    EXPECT_EQ(context.lastShadowOptions.twidth, 3.0f);
 }
 
 TEST(MessageBuiltins, AttributeOptionRendererinfo) {

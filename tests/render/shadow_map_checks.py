@@ -1,0 +1,275 @@
+#!/usr/bin/env python3
+"""End-to-end checks of shadow maps (issue 20; docs/shading-language.md, Shadow maps):
+
+* `Display "depth.z" "zfile" "z"` writes Pixar's zfile whatever the extension, holding per
+  pixel the smallest camera-space depth of its samples: exactly 5 on a plane 5 units away, and
+  on a sphere between the analytic depths of the pixel's nearest and farthest points; its header
+  holds the camera's world-to-camera and world-to-screen matrices; `Display "+x.sm" "shadow"
+  "z"` writes the same depths as a shadow map, and MakeShadow of the zfile makes the same one;
+* a two-pass RIB (frame 1 renders the depth from the light, MakeShadow makes the map, frame 2
+  renders a plane under a sphere lit by shadowspot using it) shadows the same pixels as the
+  ray-traced shadow of the same scene, but along the edge (within the filter's reach), and
+  traces no shadow rays; the map written directly by a "shadow" display does the same;
+* the default bias leaves a plane tilted 30° to the light unshadowed by itself (every pixel as
+  without a map), where "bias" 0 shadows part of it (acne: the check can fail);
+* a shadow map that does not exist warns once and falls back to traced shadows (the same image).
+
+    shadow_map_checks.py --gonio build/bin/gonio"""
+
+import math
+import os
+import re
+import struct
+import subprocess
+import sys
+
+from analytic_checks import expect, read_images, run_checks, workspace_main
+
+ZFILE_MAGIC = 0x2F0867AB
+
+
+def read_zfile(path):
+    """(width, height, worldtoscreen, worldtocamera, depths row by row) of an uncompressed zfile."""
+    with open(path, "rb") as f:
+        data = f.read()
+    magic, width, height = struct.unpack_from("<ihh", data)
+    expect(magic == ZFILE_MAGIC, f"{path}: magic {magic:#x}, not a zfile")
+    screen = struct.unpack_from("<16f", data, 8)
+    camera = struct.unpack_from("<16f", data, 72)
+    depths = struct.unpack_from(f"<{width * height}f", data, 136)
+    expect(len(data) == 136 + 4 * width * height, f"{path}: {len(data)} bytes")
+    return width, height, screen, camera, depths
+
+
+def transform(point, m):
+    """A point times a row-major 4x4 matrix (row vectors), divided by w."""
+    x, y, z = point
+    out = [x * m[c] + y * m[4 + c] + z * m[8 + c] + m[12 + c] for c in range(4)]
+    return [v / out[3] for v in out[:3]]
+
+
+DEPTH_SCENE = """Format 64 64 1
+PixelSamples 3 3
+Projection "perspective" "fov" [90]
+Translate 0 0 5
+Display "depth.z" "zfile" "z"
+Display "+depth.sm" "shadow" "z"
+WorldBegin
+AttributeBegin
+Translate 0 0 -2
+Sphere 1 -1 1 360
+AttributeEnd
+Polygon "P" [-20 -20 0  20 -20 0  20 20 0  -20 20 0]
+WorldEnd
+MakeShadow "depth.z" "made.sm"
+"""
+
+
+def sphere_depth(r2):
+    """Camera-space depth of the unit sphere at depth 3 along the ray (x, y, 1), x² + y² = r2."""
+    return (3 - math.sqrt(9 - 8 * (1 + r2))) / (1 + r2)
+
+
+def pixel_r2_range(px, py, size):
+    """The smallest and largest x² + y² over pixel (px, py) of a [-1, 1]² screen."""
+    x0, x1 = -1 + 2 * px / size, -1 + 2 * (px + 1) / size
+    y0, y1 = 1 - 2 * (py + 1) / size, 1 - 2 * py / size
+    nearest = lambda a, b: 0 if a <= 0 <= b else min(a * a, b * b)
+    return (nearest(x0, x1) + nearest(y0, y1), max(x0 * x0, x1 * x1) + max(y0 * y0, y1 * y1))
+
+
+def zfile_holds_analytic_depths(ws):
+    ws.render(DEPTH_SCENE, "depth")
+    width, height, screen, camera, depths = read_zfile(ws.path("depth.z"))
+    expect((width, height) == (64, 64), f"zfile is {width} x {height}")
+    want = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1]
+    expect(all(abs(a - b) < 1e-6 for a, b in zip(camera, want)), f"world-to-camera {camera}")
+    projected = transform((1, 2, 0), screen)
+    expect(abs(projected[0] - 0.2) < 1e-6 and abs(projected[1] - 0.4) < 1e-6,
+           f"world (1, 2, 0) goes to screen {projected}, expected (0.2, 0.4)")
+    limit = 1 / 8  # the sphere's silhouette: x² + y² <= 1/8
+    sphere = plane = 0
+    for py in range(height):
+        for px in range(width):
+            z = depths[py * width + px]
+            r2min, r2max = pixel_r2_range(px, py, width)
+            if r2min > limit:
+                expect(abs(z - 5) < 1e-5, f"plane pixel ({px},{py}) has depth {z}, expected 5")
+                plane += 1
+            elif r2max < limit:
+                low, high = sphere_depth(r2min), sphere_depth(r2max)
+                expect(low - 1e-4 <= z <= high + 1e-4,
+                       f"sphere pixel ({px},{py}) has depth {z}, outside [{low}, {high}]")
+                sphere += 1
+            else:
+                expect(sphere_depth(r2min) - 1e-4 <= z <= 5 + 1e-5, f"edge pixel ({px},{py}): {z}")
+    expect(sphere > 200 and plane > 2000, f"{sphere} sphere and {plane} plane pixels")
+    direct, made = read_images(ws.path("depth.sm"), ws.path("made.sm"))
+    for image, name in ((direct, "the shadow display"), (made, "MakeShadow")):
+        expect(image.channels == 1 and image.format == "float",
+               f"{name}: {image.channels} channels of {image.format}")
+        for (x, y), (z,) in image.pixels.items():
+            expect(abs(z - depths[y * width + x]) <= 1e-6 * abs(z), f"{name} ({x},{y}): {z}, zfile {depths[y * width + x]}")
+    info = subprocess.run(["oiiotool", "--info", "-v", ws.path("made.sm")], capture_output=True,
+                          text=True).stdout
+    expect('textureformat: "Shadow"' in info and "worldtocamera" in info,
+           f"made.sm is not tagged as a shadow map:\n{info}")
+
+
+# The light looks along +z from the origin; a sphere of radius 0.7 at depth 3 shadows a plane at
+# depth 6. The viewer stands 2.5 to the side and sees both.
+GEOMETRY = """Surface "matte"
+AttributeBegin
+Translate 0 0 3
+Sphere 0.7 -0.7 0.7 360
+AttributeEnd
+Polygon "P" [-8 -8 6  8 -8 6  8 8 6  -8 8 6]
+"""
+LIGHT_FRAME = """FrameBegin {n}
+Format 256 256 1
+PixelSamples 2 2
+Projection "perspective" "fov" [80]
+Display "light.z" "zfile" "z"
+Display "+direct.sm" "shadow" "z"
+WorldBegin
+{geometry}WorldEnd
+FrameEnd
+MakeShadow "light.z" "light.sm"
+"""
+VIEW_FRAME = """FrameBegin {n}
+Format 128 128 1
+PixelSamples 2 2
+Projection "perspective" "fov" [60]
+Translate -2.5 0 0
+Display "{name}.exr" "openexr" "rgb"
+Display "+{name}_z.exr" "openexr" "z"
+WorldBegin
+{light}LightSource "shadowspot" 1 "intensity" 36 "coneangle" [0.698] "string shadowname" "{map}" {more}
+{geometry}WorldEnd
+FrameEnd
+"""
+
+
+def view(n, name, map_name, light="", more="", geometry=GEOMETRY):
+    return VIEW_FRAME.format(n=n, name=name, map=map_name, light=light, more=more,
+                             geometry=geometry)
+
+
+TRACED = 'Attribute "light" "shadows" "on"\n'
+
+
+def frame_shadow_rays(stderr):
+    """The shadow rays of each frame's --stats line, in frame order."""
+    counts = []
+    for line in stderr.splitlines():
+        if m := re.search(r"(\d+) camera rays, (\d+) rays traced(?: \(([^)]*)\))?", line):
+            m2 = re.search(r"(\d+) shadow", m.group(3) or "")
+            counts.append(int(m2.group(1)) if m2 else 0)
+    return counts
+
+
+# Where the edge can move, on the plane (world units): the light's view and the viewer's both
+# meet the plane square on, at depth 6. A map texel's width there, the viewer pixel's, and the
+# reach of a mapped shadow's edge from the true one: a min-depth texel dilates the sphere's
+# silhouette by up to a texel, the filter region reaches half its width (a viewer pixel's
+# footprint, at least a texel), and a pixel is judged by its centre, up to half a diagonal
+# from where its area meets the edge.
+TEXEL = 2 * 6 * math.tan(math.radians(40)) / 256
+PIXEL = 2 * 6 * math.tan(math.radians(30)) / 128
+REACH = TEXEL + max(TEXEL, PIXEL) / 2 + PIXEL * math.sqrt(0.5)
+EDGE = 6 * math.tan(math.asin(0.7 / 3))  # the radius of the sphere's shadow on the plane
+
+
+def plane_radius(px, py):
+    """The distance from the light's axis of the plane point that pixel (px, py) sees."""
+    x = 2.5 + (-1 + (px + 0.5) / 64) * PIXEL * 64
+    y = (1 - (py + 0.5) / 64) * PIXEL * 64
+    return math.hypot(x, y)
+
+
+def compare_shadows(mapped, traced, depth, what):
+    """Checks that `mapped` shadows the plane where `traced` does, but within the filter's reach
+    of the shadow's edge."""
+    # Plane pixels inside the spot's cone (40° less its 5° soft edge): the rest is dark anyway.
+    plane = {p for p, (z,) in depth.pixels.items()
+             if abs(z - 6) < 1e-3 and plane_radius(*p) < 6 * math.tan(math.radians(35))}
+    brightest = max(traced.pixels[p][0] for p in plane)
+    dark = [p for p in plane if traced.pixels[p][0] <= 1e-6]
+    expect(len(dark) > 300, f"the traced shadow covers only {len(dark)} pixels")
+    expect(all(plane_radius(*p) < EDGE + PIXEL for p in dark), "the traced shadow is misplaced")
+    mismatched = [p for p in plane
+                  if abs(mapped.pixels[p][0] - traced.pixels[p][0]) > 0.1 * brightest]
+    expect(len(mismatched) < 0.02 * len(plane),
+           f"{what}: {len(mismatched)} of {len(plane)} plane pixels differ from the traced shadow")
+    far = [p for p in mismatched if abs(plane_radius(*p) - EDGE) > REACH]
+    expect(not far, f"{what}: pixels {far[:5]} differ from the traced shadow further than "
+                    f"{REACH:.3f} from its edge")
+
+
+def two_pass_map_shadows_like_rays(ws):
+    rib = (LIGHT_FRAME.format(n=1, geometry=GEOMETRY) + view(2, "mapped", "light.sm") +
+           view(3, "traced", "", light=TRACED) + view(4, "direct", "direct.sm"))
+    proc = ws.render(rib, "twopass", args=["--stats"])
+    expect("warning" not in proc.stderr, f"the render warned:\n{proc.stderr}")
+    mapped, traced, direct, depth = read_images(*(ws.path(f + ".exr") for f in
+                                                  ("mapped", "traced", "direct", "traced_z")))
+    compare_shadows(mapped, traced, depth, "MakeShadow's map")
+    compare_shadows(direct, traced, depth, "the shadow display's map")
+    rays = frame_shadow_rays(proc.stderr)
+    expect(len(rays) == 4 and rays[1] == 0 and rays[3] == 0 and rays[2] > 1000,
+           f"shadow rays per frame {rays}: the mapped frames should trace none")
+
+
+# A plane at 30° to the light's view axis, alone: nothing shadows it but itself.
+TILTED = """Surface "matte"
+AttributeBegin
+Translate 0 0 5
+Rotate 30 0 1 0
+Polygon "P" [-6 -6 0  6 -6 0  6 6 0  -6 6 0]
+AttributeEnd
+"""
+TILT_LIGHT_FRAME = """FrameBegin 1
+Format 128 128 1
+Projection "perspective" "fov" [50]
+Display "tilt.z" "zfile" "z"
+WorldBegin
+{geometry}WorldEnd
+FrameEnd
+MakeShadow "tilt.z" "tilt.sm"
+"""
+
+
+def default_bias_leaves_a_lit_plane_unshadowed(ws):
+    rib = (TILT_LIGHT_FRAME.format(geometry=TILTED) +
+           view(2, "biased", "tilt.sm", geometry=TILTED) +
+           view(3, "unshadowed", "", geometry=TILTED) +
+           view(4, "unbiased", "tilt.sm", more='"float bias" [0]', geometry=TILTED))
+    ws.render(rib, "tilt")
+    biased, unshadowed, unbiased = read_images(*(ws.path(f + ".exr") for f in
+                                                 ("biased", "unshadowed", "unbiased")))
+    lit = [p for p, (r, g, b) in unshadowed.pixels.items() if r > 1e-3]
+    expect(len(lit) > 2000, f"only {len(lit)} lit pixels")
+    acne = [p for p in lit if biased.pixels[p][0] < unshadowed.pixels[p][0] * 0.999]
+    expect(not acne, f"{len(acne)} of {len(lit)} pixels of the plane shadow themselves, "
+                     f"e.g. {acne[:5]}")
+    zero_bias = [p for p in lit if unbiased.pixels[p][0] < unshadowed.pixels[p][0] * 0.999]
+    expect(len(zero_bias) > 0.05 * len(lit),
+           f"with bias 0 only {len(zero_bias)} of {len(lit)} pixels shadow themselves")
+
+
+def missing_map_falls_back_to_traced_shadows(ws):
+    rib = view(1, "fallback", "nothere.sm") + view(2, "traced", "", light=TRACED)
+    proc = ws.render(rib, "fallback")
+    warnings = re.findall(r"warning: .*", proc.stderr)
+    expect(len(warnings) == 1 and 'shadow("nothere.sm")' in warnings[0] and
+           "shadowed by traced rays instead" in warnings[0],
+           f"expected one warning about the missing map, got:\n{proc.stderr}")
+    fallback, traced = read_images(ws.path("fallback.exr"), ws.path("traced.exr"))
+    expect(fallback.pixels == traced.pixels, "the fallback differs from the traced shadows")
+
+
+CHECKS = [zfile_holds_analytic_depths, two_pass_map_shadows_like_rays,
+          default_bias_leaves_a_lit_plane_unshadowed, missing_map_falls_back_to_traced_shadows]
+
+if __name__ == "__main__":
+    sys.exit(workspace_main(__doc__.splitlines()[0], CHECKS, "gonio-shadowmaps-"))
