@@ -622,6 +622,7 @@ bool RayScene::Impl::IntersectSolids(const V3f& org, const V3f& dir, float tnear
         hits.push_back(next);
         from = ContinuePast(next.t);
     }
+    if (crossings.empty()) return false;
     bool flip = false;
     const int first = trees->FirstBoundary(crossings, tfar, &flip);
     if (first < 0) return false;

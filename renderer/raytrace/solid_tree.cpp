@@ -35,16 +35,15 @@ bool SolidTrees::Inside(int node, const std::vector<uint8_t>& inside) const {
 
 int SolidTrees::FirstBoundary(const std::vector<SolidCrossing>& crossings, float tfar,
                               bool* flip) const {
-    // Per thread, so that a ray costs no allocation once they have grown.
-    thread_local std::vector<uint8_t> inside, seen;
-    inside.assign(nodes_.size(), 0);
-    seen.assign(nodes_.size(), 0);
-    // Where the ray starts: inside each primitive whose first crossing is an exit.
-    for (const SolidCrossing& c : crossings) {
-        if (seen[size_t(c.solid)]) continue;
-        seen[size_t(c.solid)] = 1;
-        inside[size_t(c.solid)] = !c.entering;
-    }
+    // Each primitive's state along the ray, per thread and all zero (outside) between calls:
+    // a ray touches only the entries of the primitives it crosses, whatever the frame holds.
+    thread_local std::vector<uint8_t> inside;
+    if (inside.size() < nodes_.size()) inside.resize(nodes_.size(), 0);
+    // Where the ray starts: inside each primitive whose first crossing is an exit (set from the
+    // last crossing back, so that the first one's word stands).
+    for (size_t k = crossings.size(); k-- > 0;)
+        inside[size_t(crossings[k].solid)] = !crossings[k].entering;
+    int found = -1;
     for (size_t k = 0; k < crossings.size() && crossings[k].t <= tfar; ++k) {
         const SolidCrossing& c = crossings[k];
         const int root = rootOf_[size_t(c.solid)];
@@ -55,9 +54,11 @@ int SolidTrees::FirstBoundary(const std::vector<SolidCrossing>& crossings, float
         // The combined solid is entered where `after` holds: its outward normal faces against
         // the ray there, as the crossed surface's does when the ray enters that.
         *flip = after != c.entering;
-        return int(k);
+        found = int(k);
+        break;
     }
-    return -1;
+    for (const SolidCrossing& c : crossings) inside[size_t(c.solid)] = 0;
+    return found;
 }
 
 }  // namespace gonio

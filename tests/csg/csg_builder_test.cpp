@@ -6,40 +6,23 @@
 #include <string>
 #include <vector>
 
-#include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_builder.h"
-#include "tests/support/captured_diagnostics.h"
+#include "tests/support/parse_world.h"
 
 namespace gonio {
 namespace {
 
 using Op = SolidNode::Operation;
 
-struct Built {
-    std::vector<Frame> frames;
-    std::string messages;
-    int errors = 0;
-};
+using Built = test::BuiltWorld;
 
-Built Parse(const std::string& world) {
-    Built built;
-    test::CapturedDiagnostics captured;
-    {
-        SceneBuilder builder("test.rib", captured.Get(),
-                             [&](const Frame& frame) { built.frames.push_back(frame); });
-        ParseRibString("WorldBegin\n" + world + "WorldEnd\n", "test.rib", builder, captured.Get());
-        built.errors = captured.Get().ErrorCount();
-    }
-    built.messages = captured.Text();
-    return built;
-}
+Built Parse(const std::string& world) { return test::ParseWorld(world); }
 
 const char* const kCube =
-    "PointsPolygons [4 4 4 4 4 4] [0 1 3 2  4 6 7 5  0 4 5 1  2 3 7 6  0 2 6 4  1 5 7 3] "
+    "PointsPolygons [4 4 4 4 4 4] [0 2 3 1  4 5 7 6  0 1 5 4  2 6 7 3  0 4 6 2  1 3 7 5] "
     "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
 // The same cube without its last face.
 const char* const kOpenBox =
-    "PointsPolygons [4 4 4 4 4] [0 1 3 2  4 6 7 5  0 4 5 1  2 3 7 6  0 2 6 4] "
+    "PointsPolygons [4 4 4 4 4] [0 2 3 1  4 5 7 6  0 1 5 4  2 6 7 3  0 4 6 2] "
     "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
 
 // difference(intersection(primitive(sphere, cube), sphere), cube): nodes in RIB order, parents

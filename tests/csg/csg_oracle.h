@@ -215,7 +215,7 @@ inline V3d OutwardNormal(const Primitive& p, const V3d& point) {
 }
 
 // The tree as RIB (SolidBegin blocks; boxes as PointsPolygons, each face wound so that its
-// normal points out of the box).
+// geometric normal (p1 − p0) × (p2 − p0) points out of the box).
 // `explicitPrimitives` false: a leaf inside an operation is written as its bare geometry, a
 // primitive solid of its own.
 inline void WriteRib(const CsgTree& tree, std::ostringstream& rib, bool explicitPrimitives) {
@@ -230,8 +230,8 @@ inline void WriteRib(const CsgTree& tree, std::ostringstream& rib, bool explicit
                 << "\nSphere 1 -1 1 360\n";
         } else {
             rib << "Scale " << p.size.x << ' ' << p.size.y << ' ' << p.size.z
-                << "\nPointsPolygons [4 4 4 4 4 4] [0 1 3 2  4 6 7 5  0 4 5 1  2 3 7 6  0 2 6 4"
-                   "  1 5 7 3] \"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1"
+                << "\nPointsPolygons [4 4 4 4 4 4] [0 2 3 1  4 5 7 6  0 1 5 4  2 6 7 3  0 4 6 2"
+                   "  1 3 7 5] \"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1"
                    "  1 1 1]\n";
         }
         rib << "TransformEnd\n";

@@ -14,10 +14,9 @@
 #include <vector>
 
 #include "renderer/raytrace/ray_scene.h"
-#include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_builder.h"
 #include "tests/csg/csg_oracle.h"
 #include "tests/support/captured_diagnostics.h"
+#include "tests/support/parse_world.h"
 
 namespace gonio {
 namespace {
@@ -29,24 +28,9 @@ using test::Primitive;
 using test::Sphere;
 using test::V3d;
 
-struct Built {
-    std::vector<Frame> frames;
-    std::string messages;
-    int errors = 0;
-};
+using Built = test::BuiltWorld;
 
-Built Parse(const std::string& world) {
-    Built built;
-    test::CapturedDiagnostics captured;
-    {
-        SceneBuilder builder("test.rib", captured.Get(),
-                             [&](const Frame& frame) { built.frames.push_back(frame); });
-        ParseRibString("WorldBegin\n" + world + "WorldEnd\n", "test.rib", builder, captured.Get());
-        built.errors = captured.Get().ErrorCount();
-    }
-    built.messages = captured.Text();
-    return built;
-}
+Built Parse(const std::string& world) { return test::ParseWorld(world); }
 
 V3f ToF(const V3d& v) { return V3f(float(v.x), float(v.y), float(v.z)); }
 
