@@ -179,13 +179,42 @@ inline std::optional<Boundary> FirstBoundary(const CsgTree& tree, const V3d& org
     return std::nullopt;
 }
 
+// How near the line of the ray passes to touching the primitive's surface without crossing it
+// (about a length): a ray this close to a tangent, or to a box's edge, may hit or miss in float.
+inline double SurfaceMargin(const Primitive& p, const V3d& org, const V3d& dir) {
+    const V3d o = org - p.centre;
+    if (p.kind == Primitive::Kind::Ellipsoid) {
+        const V3d os(o.x / p.size.x, o.y / p.size.y, o.z / p.size.z);
+        const V3d ds = V3d(dir.x / p.size.x, dir.y / p.size.y, dir.z / p.size.z).normalized();
+        const double distance = (os - os.dot(ds) * ds).length();  // from the centre, scaled
+        return std::fabs(distance - 1) * std::min({p.size.x, p.size.y, p.size.z});
+    }
+    // The slabs' entries and exits: the ray grazes an edge where the last entry and the first
+    // exit nearly meet, on either side.
+    double t0 = -std::numeric_limits<double>::infinity();
+    double t1 = std::numeric_limits<double>::infinity();
+    double parallel = std::numeric_limits<double>::infinity();  // along a face's plane
+    for (int axis = 0; axis < 3; ++axis) {
+        if (dir[axis] == 0) {
+            parallel = std::min(parallel, std::fabs(std::fabs(o[axis]) - p.size[axis]));
+            continue;
+        }
+        double a = (-p.size[axis] - o[axis]) / dir[axis], b = (p.size[axis] - o[axis]) / dir[axis];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a), t1 = std::min(t1, b);
+    }
+    return std::min(parallel, std::fabs(t1 - t0) * dir.length());
+}
+
 // How near the ray comes to being undecidable in float: the smallest distance between two of
-// its crossings of primitive surfaces, or the shortest inside interval (a grazing ray).
+// its crossings of primitive surfaces, the shortest inside interval, or the nearest miss of a
+// surface (SurfaceMargin).
 inline double NearestCrossingGap(const CsgTree& tree, const V3d& org, const V3d& dir) {
     std::vector<double> ts;
     double gap = std::numeric_limits<double>::infinity();
     int leaf = 0;
     for (const Primitive& p : Leaves(tree)) {
+        gap = std::min(gap, SurfaceMargin(p, org, dir));
         const std::optional<Interval> i = PrimitiveInterval(p, leaf++, org, dir);
         if (!i) continue;
         ts.push_back(i->in.t), ts.push_back(i->out.t);
