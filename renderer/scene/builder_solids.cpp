@@ -12,6 +12,9 @@
 namespace gonio {
 namespace {
 
+// Deeper trees are refused: SolidTrees evaluates a tree recursively for every ray crossing.
+constexpr size_t kMaxSolidDepth = 1000;
+
 std::optional<SolidNode::Operation> OperationNamed(const std::string& name) {
     using Op = SolidNode::Operation;
     if (name == "primitive") return Op::Primitive;
@@ -34,6 +37,12 @@ void SceneBuilder::SolidBegin(const std::string& operation, const FileLoc& loc) 
     }
     std::vector<int>& open = state_->openSolids;
     state_->solidFirstShapes.push_back(state_->frame.shapes.size());
+    if (open.size() >= kMaxSolidDepth) {
+        diagnostics_.Error(loc, "SolidBegin nested more than " + std::to_string(kMaxSolidDepth) +
+                                    " deep (a ray resolves the tree recursively)");
+        open.push_back(-1);
+        return;
+    }
     if (state_->openObject || !state_->inWorld || (!open.empty() && open.back() < 0)) {
         diagnostics_.WarningOnce("solid in object", loc,
                                  "SolidBegin inside ObjectBegin (or outside WorldBegin) is not "

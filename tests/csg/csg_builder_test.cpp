@@ -90,6 +90,19 @@ TEST(CsgBuilder, OpenSurfacesAreWarnedAbout) {
     EXPECT_EQ(capped.messages, "");
 }
 
+// A tree nested past 1000 levels is a located error, not a stack overflow at render time.
+TEST(CsgBuilder, DeepNestingIsAnError) {
+    std::string rib;
+    for (int k = 0; k < 1001; ++k) rib += "SolidBegin \"union\"\n";
+    rib += "Sphere 1 -1 1 360\n";
+    for (int k = 0; k < 1001; ++k) rib += "SolidEnd\n";
+    const Built built = Parse(rib);
+    EXPECT_EQ(built.errors, 1);
+    EXPECT_NE(built.messages.find("test.rib:1002:1: error: SolidBegin nested more than 1000 deep"),
+              std::string::npos)
+        << built.messages.substr(0, 300);
+}
+
 // Solids inside ObjectBegin are not kept; an instance inside a solid joins it as copies.
 TEST(CsgBuilder, ObjectsAndSolids) {
     const Built inside = Parse(
