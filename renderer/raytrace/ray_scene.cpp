@@ -13,13 +13,21 @@
 #include "base/overloaded.h"
 #include "renderer/raytrace/motion.h"
 #include "renderer/raytrace/shape_evaluation.h"
+#include "renderer/raytrace/solid_tree.h"
 #include "renderer/raytrace/transforms.h"
+#include "renderer/raytrace/transparent_layers.h"
 
 namespace gonio {
 namespace {
 
 using Imath::M44f;
 using Imath::V3f;
+
+// RayHit::instID of a hit on a solid's surface, which lies in Impl::solids, not in `top`.
+constexpr unsigned kSolidLevel = RTC_INVALID_GEOMETRY_ID - 1;
+// Crossings of solids' surfaces one ray collects at most; a ray through more sees the rest as
+// empty space.
+constexpr size_t kMaxSolidCrossings = 1024;
 
 // Width scales with the cube root of the volume change: exact for similarity transforms.
 float LengthScale(const M44f& m) { return std::cbrt(std::fabs(m.determinant())); }
@@ -155,6 +163,10 @@ struct RayScene::Impl {
     std::vector<float> defaultCs, defaultOs;
     RTCDevice device = nullptr;
     SceneLevel top;
+    // The surfaces of solids (Frame::solids) in world space, apart from `top`: a ray finds its
+    // crossings with them here and SolidTrees combines them. Null scene: the frame has none.
+    SceneLevel solids;
+    std::unique_ptr<SolidTrees> trees;
     std::vector<SceneLevel> definitions;
     std::vector<InstancePlacement> instances;
 
@@ -163,6 +175,7 @@ struct RayScene::Impl {
     ~Impl() {
         for (SceneLevel& level : definitions) rtcReleaseScene(level.scene);
         if (top.scene) rtcReleaseScene(top.scene);
+        if (solids.scene) rtcReleaseScene(solids.scene);
         if (device) rtcReleaseDevice(device);
     }
 
@@ -213,6 +226,14 @@ struct RayScene::Impl {
         const InstancePlacement* placement;
     };
     ResolvedHit Resolve(const RayHit& hit) const;
+    // The nearest hit in one level's Embree scene (`top` or `solids`).
+    bool Trace(const SceneLevel& level, const V3f& org, const V3f& dir, float tnear, float tfar,
+               float time, RayHit* hit) const;
+    // The nearest point of a combined solid's surface within [tnear, tfar].
+    bool IntersectSolids(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
+                         RayHit* hit) const;
+    // Whether a ray enters the surface it crossed at `hit` (a hit in `solids`).
+    bool Enters(const RayHit& hit, const V3f& org, const V3f& dir) const;
     // The hit geometry's record alone (Resolve without the attributes).
     const GeometryRecord& RecordOf(const RayHit& hit) const;
     // The transforms between the world and the space the hit's geometry was built in (the
@@ -506,8 +527,16 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics, Traversal trave
     rtcSetSceneFlags(s.top.scene, s.sceneFlags);
     s.shutterOpen = frame.options.shutterOpen;
     s.shutterClose = std::max(frame.options.shutterClose, frame.options.shutterOpen);
+    if (!frame.solids.empty()) {
+        s.solids.scene = rtcNewScene(s.device);
+        rtcSetSceneFlags(s.solids.scene, s.sceneFlags);
+        s.trees = std::make_unique<SolidTrees>(frame.solids);
+    }
     for (const SceneShape& shape : frame.shapes) {
-        if (shape.worldFromObjectMotion.empty()) {
+        if (shape.solid >= 0) {
+            // The builder keeps solids' surfaces static (builder_solids.cpp).
+            s.AddShape(s.solids, shape, shape.worldFromObject);
+        } else if (shape.worldFromObjectMotion.empty()) {
             s.AddShape(s.top, shape, shape.worldFromObject);
         } else {
             // A moving shape is placed like an object instance whose placement moves.
@@ -528,6 +557,7 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics, Traversal trave
                 use.worldFromDefinitionMotion);
     }
     rtcCommitScene(s.top.scene);
+    if (s.solids.scene) rtcCommitScene(s.solids.scene);
 }
 
 int RayScene::Impl::NewLevel(const std::vector<const SceneShape*>& shapes, bool inObjectSpace) {
@@ -569,32 +599,75 @@ void RayScene::Impl::Place(int level, const M44f& worldFromDefinition, const Obj
 RayScene::~RayScene() = default;
 
 size_t RayScene::GeometryCount() const {
-    size_t n = impl_->top.records.size();
+    size_t n = impl_->top.records.size() + impl_->solids.records.size();
     for (const SceneLevel& level : impl_->definitions) n += level.records.size();
     return n;
 }
 
-bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
-                         RayHit* hit) const {
+bool RayScene::Impl::Trace(const SceneLevel& level, const V3f& org, const V3f& dir, float tnear,
+                           float tfar, float time, RayHit* hit) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
-    rh.ray = impl_->MakeRay(org, dir, tnear, tfar, time);
+    rh.ray = MakeRay(org, dir, tnear, tfar, time);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->top.scene, &context, &rh);
+    rtcIntersect1(level.scene, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     hit->t = rh.ray.tfar;
     hit->time = time;
     hit->geomID = rh.hit.geomID;
     hit->primID = rh.hit.primID;
-    hit->instID = rh.hit.instID[0];
+    hit->instID = &level == &solids ? kSolidLevel : rh.hit.instID[0];
     hit->u = rh.hit.u;
     hit->v = rh.hit.v;
+    hit->flipNormal = false;
     const V3f ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-    const bool quadric = impl_->RecordOf(*hit).quadric != nullptr;
+    const bool quadric = RecordOf(*hit).quadric != nullptr;
     hit->Ng = quadric ? V3f(0) : ng;
     hit->objectP = quadric ? ng : V3f(0);  // QuadricIntersect's point
+    return true;
+}
+
+bool RayScene::Impl::Enters(const RayHit& hit, const V3f& org, const V3f& dir) const {
+    const GeometryRecord& record = RecordOf(hit);
+    const ObjectHit object = EvaluateObject(record, hit, org + hit.t * dir, dir, M44f());
+    const V3f worldNg = TransformNormal(record.objectFromSpace, object.geometry.Ng);
+    return (worldNg.dot(dir) < 0) != record.shape->flipNormals;
+}
+
+bool RayScene::Impl::IntersectSolids(const V3f& org, const V3f& dir, float tnear, float tfar,
+                                     float time, RayHit* hit) const {
+    // Every crossing to the end of the ray: those beyond tfar say where the ray starts.
+    thread_local std::vector<SolidCrossing> crossings;
+    thread_local std::vector<RayHit> hits;
+    crossings.clear();
+    hits.clear();
+    RayHit next;
+    float from = tnear;
+    while (crossings.size() < kMaxSolidCrossings &&
+           Trace(solids, org, dir, from, std::numeric_limits<float>::infinity(), time, &next)) {
+        crossings.push_back({next.t, RecordOf(next).shape->solid, Enters(next, org, dir)});
+        hits.push_back(next);
+        from = ContinuePast(next.t);
+    }
+    if (crossings.empty()) return false;
+    bool flip = false;
+    const int first = trees->FirstBoundary(crossings, tfar, &flip);
+    if (first < 0) return false;
+    *hit = hits[size_t(first)];
+    hit->flipNormal = flip;
+    return true;
+}
+
+bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
+                         RayHit* hit) const {
+    const bool found = impl_->Trace(impl_->top, org, dir, tnear, tfar, time, hit);
+    // Frames without solids pay this one test.
+    if (!impl_->trees) return found;
+    RayHit solid;
+    if (!impl_->IntersectSolids(org, dir, tnear, found ? hit->t : tfar, time, &solid)) return found;
+    *hit = solid;
     return true;
 }
 
@@ -603,7 +676,9 @@ bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar,
     rtcInitIntersectContext(&context);
     RTCRay ray = impl_->MakeRay(org, dir, tnear, tfar, time);
     rtcOccluded1(impl_->top.scene, &context, &ray);
-    return ray.tfar < 0;
+    if (ray.tfar < 0) return true;
+    RayHit solid;
+    return impl_->trees && impl_->IntersectSolids(org, dir, tnear, tfar, time, &solid);
 }
 
 ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
@@ -680,13 +755,14 @@ bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& nam
 
 const GeometryRecord& RayScene::Impl::RecordOf(const RayHit& hit) const {
     if (hit.instID == RTC_INVALID_GEOMETRY_ID) return *top.records[hit.geomID];
+    if (hit.instID == kSolidLevel) return *solids.records[hit.geomID];
     const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
     return *definitions[placement.level].records[hit.geomID];
 }
 
 RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
     const GeometryRecord* record = &RecordOf(hit);
-    if (hit.instID == RTC_INVALID_GEOMETRY_ID)
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID || hit.instID == kSolidLevel)
         return {record, record->shape->attributes.get(), nullptr};
     const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
     const Attributes* attributes = record->shape->attributes.get();
@@ -775,7 +851,7 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     sp.P = worldP;
     sp.dPdu = TransformVector(worldFromObject, object.geometry.dPdu);
     sp.dPdv = TransformVector(worldFromObject, object.geometry.dPdv);
-    const float flip = record->shape->flipNormals ? -1.f : 1.f;
+    const float flip = record->shape->flipNormals != hit.flipNormal ? -1.f : 1.f;
     sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
     // N is Ng unless the primitive gives normals.
     sp.N = object.N == object.geometry.Ng

@@ -1,6 +1,7 @@
 #pragma once
 // The frame's geometry on Embree: the only interface to the ray tracing kernels. Built once per
-// frame; Intersect, Occluded and Evaluate are thread-safe.
+// frame; Intersect, Occluded and Evaluate are thread-safe. Solids (SolidBegin) are resolved
+// inside Intersect and Occluded, so that every kind of ray sees the same CSG.
 
 #include <Imath/ImathVec.h>
 
@@ -24,7 +25,10 @@ struct RayHit {
     Imath::V3f Ng;
     // A quadric's hit point in its object space, from which Evaluate derives (u, v) and the
     // normal (u, v above are then 0). Zero for the other kinds.
-    Imath::V3f objectP;
+    Imath::V3f objectP;  // A CSG hit on the surface of a subtracting or intersecting solid whose
+                         // outward normal is
+    // the reverse of the combined solid's there (RISpec 3.2 §5.9): Evaluate turns it round.
+    bool flipNormal = false;
 };
 
 // The little a particle tracer needs at a hit (RayScene::EvaluateLean): the point, the normals
@@ -56,7 +60,8 @@ class RayScene {
     RayScene& operator=(const RayScene&) = delete;
 
     // The nearest hit of org + t·dir with tnear <= t <= tfar, at `time` in the shutter
-    // interval (moving geometry is where it is then).
+    // interval (moving geometry is where it is then). On a solid it is the nearest point of
+    // the combined solid's surface, whether the ray starts outside or inside it.
     bool Intersect(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
                    float time, RayHit* hit) const;
     // Whether anything lies on org + t·dir for tnear <= t <= tfar at `time`.

@@ -3,6 +3,8 @@
 
 #include <Imath/ImathMatrixAlgo.h>
 
+#include <cmath>
+
 #include "renderer/geometry/blobby.h"
 #include "renderer/geometry/curves.h"
 #include "renderer/geometry/nurbs.h"
@@ -106,6 +108,7 @@ void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
                                      "a shape inside ObjectBegin is not area light geometry: "
                                      "its instances are rendered, but do not emit");
     } else {
+        JoinSolid(&shape);
         state_->frame.shapes.push_back(std::move(shape));
         JoinAreaLight(loc);
     }
@@ -248,7 +251,7 @@ void SceneBuilder::Geometry(const std::string& type, const ParamList&, const Fil
 // ---- quadrics -------------------------------------------------------------------------------
 
 void SceneBuilder::AddQuadric(const char* request, std::unique_ptr<Quadric> quadric,
-                              const ParamList& params, const FileLoc& loc) {
+                              const ParamList& params, const FileLoc& loc, bool closed) {
     PrimVarSet vars;
     if (!StartPrimitive(request, loc) || !TypeVars(params, &vars)) return;
     // RISpec §5.4: quadrics take one uniform value and four varying/vertex values, at the
@@ -260,12 +263,14 @@ void SceneBuilder::AddQuadric(const char* request, std::unique_ptr<Quadric> quad
         diagnostics_.Error(loc, std::string(request) + ": " + *error);
         return;
     }
-    AddShape(QuadricShape{std::move(quadric), std::move(vars)}, loc);
+    AddShape(QuadricShape{std::move(quadric), std::move(vars), closed}, loc);
 }
 
 void SceneBuilder::Sphere(float radius, float zmin, float zmax, float thetamax,
                           const ParamList& params, const FileLoc& loc) {
-    AddQuadric("Sphere", MakeSphere(radius, zmin, zmax, thetamax), params, loc);
+    const bool closed =
+        std::fabs(thetamax) >= 360 && zmin <= -std::fabs(radius) && zmax >= std::fabs(radius);
+    AddQuadric("Sphere", MakeSphere(radius, zmin, zmax, thetamax), params, loc, closed);
 }
 
 void SceneBuilder::Cone(float height, float radius, float thetamax, const ParamList& params,
@@ -296,7 +301,9 @@ void SceneBuilder::Disk(float height, float radius, float thetamax, const ParamL
 
 void SceneBuilder::Torus(float majorRadius, float minorRadius, float phimin, float phimax,
                          float thetamax, const ParamList& params, const FileLoc& loc) {
-    AddQuadric("Torus", MakeTorus(majorRadius, minorRadius, phimin, phimax, thetamax), params, loc);
+    const bool closed = std::fabs(thetamax) >= 360 && std::fabs(phimax - phimin) >= 360;
+    AddQuadric("Torus", MakeTorus(majorRadius, minorRadius, phimin, phimax, thetamax), params, loc,
+               closed);
 }
 
 // ---- implicit surfaces ----------------------------------------------------------------------

@@ -22,6 +22,8 @@ namespace gonio {
 struct QuadricShape {
     std::shared_ptr<const Quadric> quadric;
     PrimVarSet vars;
+    // It encloses a volume by itself (a sphere or torus swept all the way round): CSG asks.
+    bool closed = false;
 };
 
 using ShapeGeometry = std::variant<TriangleMesh, QuadricShape, SubdivisionCage, CurveSet, PointSet>;
@@ -40,6 +42,21 @@ struct SceneShape {
     std::vector<std::vector<V3f>> deformPositions;
     // Reverse the outward normal (Orientation "inside", or "lh"/"rh" against the handedness).
     bool flipNormals = false;
+    // The "primitive" solid (index into Frame::solids) whose surface this shape is part of;
+    // −1 for a shape outside every SolidBegin block.
+    int solid = -1;
+    FileLoc loc;
+};
+
+// A node of a CSG tree (RISpec 3.2 §5.9, SolidBegin/SolidEnd). A "primitive" solid is the
+// volume its surfaces (the shapes whose SceneShape::solid names it) enclose, their outward
+// normals telling inside from outside; the other operations combine their children. A
+// geometric primitive directly inside an operation is a primitive solid of its own.
+struct SolidNode {
+    enum class Operation { Primitive, Union, Intersection, Difference };
+    Operation operation = Operation::Primitive;
+    int parent = -1;            // index into Frame::solids; −1 for the root of a tree
+    std::vector<int> children;  // in RIB order: a difference takes the later ones from the first
     FileLoc loc;
 };
 
@@ -83,6 +100,7 @@ struct Frame {
     std::vector<SceneLight> lights;
     std::vector<SceneShape> shapes;
     std::vector<ObjectInstanceUse> instances;
+    std::vector<SolidNode> solids;  // every CSG tree's nodes, parents before their children
     // CoordinateSystem names: world space from the named space.
     std::map<std::string, M44f> namedSpaces;
     std::string sceneFile;  // the RIB file, for resolving relative output and search paths

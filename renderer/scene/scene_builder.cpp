@@ -148,6 +148,8 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
     state_->inWorld = true;
     ApplyColorPlan(state_->worldsBegun);
     state_->frame = Frame();
+    state_->openSolids.clear();
+    state_->solidFirstShapes.clear();
     state_->frame.number = state_->frameNumber;
     state_->frame.ordinal = state_->worldsBegun++;
     state_->frame.options = state_->options;
@@ -259,6 +261,18 @@ void SceneBuilder::ObjectInstance(const RtHandle& handle, const FileLoc& loc) {
         use.shapeAttributes.push_back(std::make_shared<const Attributes>(
             InstanceAttributes(state_->attributes, *definition.base, *own)));
     }
+    if (!state_->openSolids.empty() && state_->openSolids.back() >= 0) {
+        // Inside a solid the instance's shapes are copied into the frame, to join it as
+        // surfaces of their own (the CSG resolves shapes, not instances).
+        for (size_t i = 0; i < definition.shapes.size(); ++i) {
+            SceneShape shape = definition.shapes[i];
+            shape.worldFromObject = shape.worldFromObject * state_->transform;
+            shape.attributes = use.shapeAttributes[i];
+            JoinSolid(&shape);
+            state_->frame.shapes.push_back(std::move(shape));
+        }
+        return;
+    }
     state_->frame.instances.push_back(std::move(use));
 }
 
@@ -281,15 +295,5 @@ void SceneBuilder::MotionEnd(const FileLoc& loc) {
     if (!PopBlock(Block::Motion, "MotionEnd", loc)) return;
     state_->motionRequestCount = -1;
 }
-
-void SceneBuilder::SolidBegin(const std::string& operation, const FileLoc& loc) {
-    PushBlock(Block::Solid, loc);
-    if (operation != "primitive")
-        diagnostics_.WarningOnce("SolidBegin", loc,
-                                 "CSG (SolidBegin \"" + operation +
-                                     "\") is not supported: the solids are rendered as a union");
-}
-
-void SceneBuilder::SolidEnd(const FileLoc& loc) { PopBlock(Block::Solid, "SolidEnd", loc); }
 
 }  // namespace gonio

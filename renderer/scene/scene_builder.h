@@ -254,8 +254,15 @@ class SceneBuilder : public RiTarget {
     bool TypeVars(const ParamList& params, PrimVarSet* vars);
     template <class T>
     void AddGeometry(const char* request, GeometryResult<T> result, const FileLoc& loc);
+    // `closed`: the quadric encloses a volume by itself (QuadricShape::closed).
     void AddQuadric(const char* request, std::unique_ptr<Quadric> quadric, const ParamList& params,
-                    const FileLoc& loc);
+                    const FileLoc& loc, bool closed = false);
+    // CSG (builder_solids.cpp): a shape added inside SolidBegin becomes the surface of the
+    // innermost "primitive" solid, or a primitive solid of its own (inside ObjectBegin solids
+    // are not kept: SolidBegin warns).
+    void JoinSolid(SceneShape* shape);
+    // Warns about a primitive solid whose surfaces do not enclose a volume (RISpec: undefined).
+    void CheckClosed(const SolidNode& node, const std::vector<const SceneShape*>& surfaces);
     bool StartPrimitive(const char* request, const FileLoc& loc);
     void AddDeformationSample(const ShapeGeometry& geometry, const FileLoc& loc);
 

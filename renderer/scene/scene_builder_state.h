@@ -52,6 +52,10 @@ struct SceneBuilder::State {
     std::shared_ptr<ObjectDefinition> openObject;
     std::string openObjectHandle;
     int motionRequestCount = -1;  // requests seen inside a MotionBegin block; -1 outside
+    // The open SolidBegin blocks, innermost last: indices into frame.solids, −1 for a block
+    // whose solid is not kept (inside ObjectBegin).
+    std::vector<int> openSolids;
+    std::vector<size_t> solidFirstShapes;  // frame.shapes.size() at each open SolidBegin
 };
 
 inline M44f ToM44f(const RtMatrix& m) {

@@ -17,31 +17,16 @@
 
 #include "base/math.h"
 #include "renderer/raytrace/shadow_transmission.h"
-#include "renderer/rib/rib_parser.h"
-#include "renderer/scene/scene_builder.h"
-#include "tests/support/captured_diagnostics.h"
+#include "tests/support/parse_world.h"
 
 namespace gonio {
 namespace {
 
 using Imath::V3f;
 
-struct Built {
-    std::vector<Frame> frames;
-    std::string messages;
-};
+using Built = test::BuiltWorld;
 
-Built Parse(const std::string& world) {
-    Built built;
-    test::CapturedDiagnostics captured;
-    {
-        SceneBuilder builder("test.rib", captured.Get(),
-                             [&](const Frame& frame) { built.frames.push_back(frame); });
-        ParseRibString("WorldBegin\n" + world + "WorldEnd\n", "test.rib", builder, captured.Get());
-    }
-    built.messages = captured.Text();
-    return built;
-}
+Built Parse(const std::string& world) { return test::ParseWorld(world); }
 
 // The geometry of the frame's first light.
 AreaLightGeometry LightOf(const std::string& world) {
