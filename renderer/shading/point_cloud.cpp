@@ -137,7 +137,7 @@ bool PointCloud::Parse(const std::string& bytes, std::string* why) {
     if (count > in.Left() / pointBytes || count * pointBytes != in.Left())
         return fail("holds " + std::to_string(in.Left()) + " bytes of points, not " +
                     std::to_string(count) + " points of " + std::to_string(pointBytes));
-    std::vector<float> values(size_t(valueWidth_));
+    std::vector<float> values(static_cast<size_t>(valueWidth_));
     for (uint64_t i = 0; i < count; ++i) {
         Imath::V3f P, N;
         for (int k = 0; k < 3; ++k) in.Get(&P[k]);

@@ -47,7 +47,7 @@ const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"Ol", BaseType::Color, true, kS | kL, kL},
     {"Ps", BaseType::Point, true, kL, 0},
     // Ns: the normal of the surface point being lit (PRMan's and Pixie's light shaders read it
-    // inside illuminate and solar), as the surface shader was given it.
+    // inside illuminate and solar): the surface's shading normal as the renderer found it.
     {"Ns", BaseType::Normal, true, kL, 0},
     {"ncomps", BaseType::Float, false, kAll, 0},
     {"time", BaseType::Float, false, kAll, 0},
