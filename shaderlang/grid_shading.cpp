@@ -72,7 +72,7 @@ std::map<std::string, GridOutput> ShadeGrid(ShaderInstance& instance, int width,
         g.u = u.data(), g.v = v.data(), g.s = u.data(), g.t = v.data();
         g.du = du.data(), g.dv = dv.data();
         g.E[2] = -1.0f;
-        if (instance.Master().Type() == ShaderType::Light) g.Ps = P.data();
+        if (instance.Master().Type() == ShaderType::Light) g.Ps = P.data(), g.Ns = N.data();
         context.BeginBatch(g, ncomps);
         for (int i = 0; i < n; ++i) {
             const int index = start + i, x = index % width;

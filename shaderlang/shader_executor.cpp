@@ -67,6 +67,8 @@ const float* GlobalSource(int id, const ShaderGlobals& g) {
             return g.Oi ? g.Oi : g.Os;
         case kGlobalPs:
             return g.Ps;
+        case kGlobalNs:
+            return g.Ns;
         case kGlobalAlpha:
             return g.alphas;
         default:
@@ -161,6 +163,7 @@ bool ShaderExecutor::Run(ShaderInstance& instance, const ShaderGlobals& globals,
         x.masks[0].all = false;
         std::memcpy(x.masks[0].bits.data(), globals.active, size_t(globals.n));
     }
+    x.inputP = globals.P;
     LoadGlobals(x, globals);
     LoadPresets(x, globals);
     x.Execute(0, int(p.code.size()));

@@ -37,6 +37,22 @@ bool ShadingContext::Shadow(const std::string& name, const float*, const uint8_t
     return Unavailable("shadow(\"" + name + "\")", 1, out);
 }
 
+bool ShadingContext::BakePoints(const std::string& file, const float*, const float*, const uint8_t*,
+                                const std::vector<PointChannel>&) {
+    RuntimeWarning("bake " + file,
+                   "bake3d(\"" + file + "\"): point clouds are baked by the renderer only");
+    return false;
+}
+
+bool ShadingContext::LookupPoints(const std::string& file, const float*, const float*,
+                                  const uint8_t*, const std::vector<PointChannel>& channels) {
+    for (const PointChannel& c : channels)
+        for (int k = 0; k < c.width; ++k) std::fill_n(c.values.data + size_t(k) * n_, n_, 0.0f);
+    RuntimeWarning("texture3d " + file,
+                   "texture3d(\"" + file + "\"): point clouds are read by the renderer only");
+    return false;
+}
+
 void ShadingContext::Trace(const float*, const float*, const uint8_t*, float* out) {
     Unavailable("trace()", colorComponents_, out);
 }

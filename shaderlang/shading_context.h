@@ -117,6 +117,14 @@ struct SampledHits {
     std::vector<float> colour;  // ncomps × count: Shaded's colour, Transmission's product
 };
 
+// A named channel of per-point values, as bake3d() stores and texture3d() looks them up:
+// `width` floats per point in `values` (batch.h layout; bake3d's may be uniform).
+struct PointChannel {
+    std::string name;
+    int width = 0;
+    FloatArg values;
+};
+
 class ShadingContext {
   public:
     virtual ~ShadingContext() = default;
@@ -173,6 +181,18 @@ class ShadingContext {
     // knows no BRDF files.
     virtual bool MeasuredBrdf(const std::string& name, int count, const float* wIn,
                               const float* wOut, const uint8_t* active, float* out);
+
+    // bake3d() (PRMan's point clouds): stores each active point's P and N (3 × n, current
+    // space) with the channels' values in the point cloud `file`, which the renderer writes
+    // when the frame ends. False (with a warning) where nothing is stored; the default stores
+    // nothing.
+    virtual bool BakePoints(const std::string& file, const float* P, const float* N,
+                            const uint8_t* active, const std::vector<PointChannel>& channels);
+    // texture3d(): writes into each channel's values (varying) the values of the point of the
+    // point cloud `file` nearest to each active P (current space). False (and 0) if the file
+    // cannot be read or lacks a channel; the context reports why through RuntimeWarning.
+    virtual bool LookupPoints(const std::string& file, const float* P, const float* N,
+                              const uint8_t* active, const std::vector<PointChannel>& channels);
 
     // trace(P, R): colour arriving at each P from direction R (ncomps × n), by a traced ray.
     virtual void Trace(const float* P, const float* R, const uint8_t* active, float* out);

@@ -188,6 +188,7 @@ struct ShaderGlobals {
     const float *Ci = nullptr, *Oi = nullptr;  // inputs of volume and imager shaders
     const float* alphas = nullptr;             // imager shaders: each pixel's alpha (null: alpha)
     const float* Ps = nullptr;                 // light shaders: the surface points being lit
+    const float* Ns = nullptr;                 // ... and their normals (null: 0)
     float E[3] = {0, 0, 0};                    // the eye (camera space: the origin)
     float time = 0, dtime = 0, alpha = 1;
 

@@ -43,6 +43,7 @@ void SimpleShadingContext::RunLights(const float* P, std::vector<LightResult>* r
     ShaderGlobals g;
     g.n = n_;
     g.Ps = P;
+    g.Ns = globals_.N;
     g.E[0] = globals_.E[0], g.E[1] = globals_.E[1], g.E[2] = globals_.E[2];
     g.time = globals_.time;
     for (size_t i = 0; i < lights_.size(); ++i) {

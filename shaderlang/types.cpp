@@ -26,7 +26,8 @@ const char* ToString(BaseType base) {
 
 std::string ToString(const TypeSpec& type) {
     std::string s = ToString(type.base);
-    if (type.IsArray()) s += "[" + std::to_string(type.arrayLength) + "]";
+    if (type.IsUnsized()) s += "[]";
+    if (type.IsArray() && !type.IsUnsized()) s += "[" + std::to_string(type.arrayLength) + "]";
     return s;
 }
 

@@ -14,9 +14,14 @@ enum class Detail : uint8_t { Uniform, Varying };
 
 struct TypeSpec {
     BaseType base = BaseType::Void;
-    int arrayLength = 0;  // 0: not an array; RSL arrays are 1-D with a fixed length
+    // 0: not an array; RSL arrays are 1-D with a fixed length. kUnsized: a user function's
+    // `float a[]` formal, which takes an array of any length (its argument's); a shader
+    // parameter's `float a[]` takes its default's length when it is checked.
+    int arrayLength = 0;
+    static constexpr int kUnsized = -1;
 
-    bool IsArray() const { return arrayLength > 0; }
+    bool IsArray() const { return arrayLength != 0; }
+    bool IsUnsized() const { return arrayLength == kUnsized; }
     bool IsPointLike() const {
         return base == BaseType::Point || base == BaseType::Vector || base == BaseType::Normal;
     }

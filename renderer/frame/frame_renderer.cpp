@@ -507,6 +507,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
         }
     });
     progress.Done();
+    shading->FinishFrame(diagnostics);  // point clouds the shaders baked, for later frames
     if (diagnostics.ErrorCount() > errorsBefore) {
         diagnostics.Error(FileLoc{}, "frame " + std::to_string(frame.number) +
                                          " is not written: its shaders met the errors above");

@@ -154,14 +154,17 @@ bool PathWorker::NextScatteringHit(const Imath::V3f& org, const Imath::V3f& dir,
     return false;
 }
 
-bool PathWorker::RunLight(int index, const Imath::V3f& Ps, const AreaLightSample* area, float time,
-                          uint64_t seed, sl::LightResult* result) {
+bool PathWorker::RunLight(int index, const Imath::V3f& Ps, const Imath::V3f& Ns,
+                          const AreaLightSample* area, float time, uint64_t seed,
+                          sl::LightResult* result) {
     const FrameLight& light = c_.shaders_.Lights()[size_t(index)];
     const Imath::M44f& currentFromWorld = c_.frame_.options.cameraFromWorld;
     const Imath::V3f Pc = TransformPoint(currentFromWorld, Ps);
+    const Imath::V3f Nc = TransformNormal(c_.worldFromCurrent_, Ns);
     sl::ShaderGlobals globals;
     globals.n = 1;
     globals.Ps = &Pc.x;
+    globals.Ns = &Nc.x;
     globals.time = time;
     Imath::V3f P, N;
     if (area) {
@@ -182,7 +185,8 @@ bool PathWorker::Emitted(int index, const Imath::V3f& from, float time, uint64_t
     if (!(cosLight > 0) || !c_.shaders_.Lights()[size_t(index)].instance) return false;
     const AreaLightSample here{sp_.P, sp_.N, 0};
     sl::LightResult result;
-    if (!RunLight(index, from, &here, time, seed, &result)) return false;
+    // `from` is the previous path vertex, whose normal is not kept here.
+    if (!RunLight(index, from, Imath::V3f(0.f), &here, time, seed, &result)) return false;
     for (int c = 0; c < ncomps_; ++c) Le_[c] = result.Cl[size_t(c)] * d2 / cosLight;
     return true;
 }
@@ -201,7 +205,8 @@ void PathWorker::DirectLight(const SurfacePoint& sp, const ShadingFrame& frame, 
         AreaLightSample sample{};
         if (light.area) sample = light.area->Sample(u0, u1, u2);
         sl::LightResult result;
-        if (!RunLight(index, sp.P, light.area ? &sample : nullptr, time, seed, &result)) continue;
+        if (!RunLight(index, sp.P, sp.N, light.area ? &sample : nullptr, time, seed, &result))
+            continue;
         // Ambient light is what the paths themselves gather; solar() without an axis (light
         // from all directions) has no direction to sample.
         if (!result.fromAllDirections.empty() && result.fromAllDirections[0]) continue;

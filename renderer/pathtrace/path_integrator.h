@@ -72,10 +72,11 @@ class PathWorker {
     // (ncomps floats into Ld); `state` is the path's random stream.
     void DirectLight(const SurfacePoint& sp, const ShadingFrame& frame, float time, uint64_t* state,
                      float* Ld);
-    // Runs light `index`'s shader for the surface point Ps (world), with the light's own P and
-    // N (world; an area light's surface point) when `area` is set.
-    bool RunLight(int index, const Imath::V3f& Ps, const AreaLightSample* area, float time,
-                  uint64_t seed, sl::LightResult* result);
+    // Runs light `index`'s shader for the surface point Ps (world) with normal Ns (world; zero
+    // where there is none), with the light's own P and N (world; an area light's surface
+    // point) when `area` is set.
+    bool RunLight(int index, const Imath::V3f& Ps, const Imath::V3f& Ns,
+                  const AreaLightSample* area, float time, uint64_t seed, sl::LightResult* result);
     // The radiance an area light's surface sends from hit sp_ towards `from` (world), into
     // Le_: what its shader's Cl is per unit area, times d² / cos θ at the light. False when the
     // hit is not on its emitting side.

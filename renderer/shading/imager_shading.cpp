@@ -174,13 +174,15 @@ class ImagerWorker {
     ImagerContext context_;
     ColourConversion colours_;
     sl::ShaderExecutor executor_;
-    std::vector<float> P_, Ci_, Oi_, alpha_;
+    std::vector<float> P_, s_, t_, Ci_, Oi_, alpha_;
     std::vector<uint64_t> seeds_;
 };
 
 void ImagerWorker::RunTile(int x0, int y0, int width, int height, uint64_t seed, Image& image) {
     const int n = width * height, ncomps = frame_.options.colorComponents;
     P_.assign(3 * size_t(n), 0.f);
+    s_.resize(size_t(n));
+    t_.resize(size_t(n));
     Ci_.assign(size_t(ncomps) * n, 0.f);
     Oi_.assign(size_t(ncomps) * n, 0.f);
     alpha_.assign(size_t(n), 0.f);
@@ -192,6 +194,10 @@ void ImagerWorker::RunTile(int x0, int y0, int width, int height, uint64_t seed,
             const int rasterX = image.xorigin + x0 + x, rasterY = image.yorigin + y0 + y;
             P_[k] = rasterX + 0.5f;
             P_[n + k] = rasterY + 0.5f;
+            // s, t: the pixel centre across the whole frame (Format), 0 to 1 from the top left,
+            // as a full-screen texture lookup in an imager expects.
+            s_[k] = P_[k] / float(frame_.options.xres);
+            t_[k] = P_[n + k] / float(frame_.options.yres);
             colours_.FromRgb(pixel, &Ci_[k], size_t(n));
             for (int c = 0; c < ncomps; ++c) Oi_[size_t(c) * n + k] = pixel[kChannelA];
             alpha_[k] = pixel[kChannelA];
@@ -202,6 +208,8 @@ void ImagerWorker::RunTile(int x0, int y0, int width, int height, uint64_t seed,
     sl::ShaderGlobals globals;
     globals.n = n;
     globals.P = P_.data();
+    globals.s = s_.data();
+    globals.t = t_.data();
     globals.Ci = Ci_.data();
     globals.Oi = Oi_.data();
     globals.alphas = alpha_.data();

@@ -27,6 +27,7 @@ RenderContext::RenderContext(const FrameShaders& shaders, const RayScene& scene,
       camera_(camera),
       textures_(textures, shaders.TextureSearchPath()),
       shadowMaps_(textures.shadowMaps),
+      pointClouds_(textures.pointClouds),
       lightExecutor_(lightExecutor),
       tracer_(tracer),
       depth_(depth),
@@ -128,6 +129,10 @@ void RenderContext::EvaluateLights(const float* P, const uint8_t* active,
     const int all = n_;
     lightP_ = MainPoints(P, active);
     n_ = MainCount();
+    // The surface's P, N and I: the globals of an ambient light (which runs at the surface)
+    // and every light's Ns.
+    sl::ShaderGlobals surface;
+    ambientGlobals_.Set(*batch_, worldFromCurrent_, n_, lightP_, &surface);
     for (int index : batch_->attributes->activeLights) {
         const FrameLight& light = lights[index];
         if (!light.instance) continue;
@@ -139,8 +144,9 @@ void RenderContext::EvaluateLights(const float* P, const uint8_t* active,
             sl::ShaderGlobals globals;
             globals.n = n_;
             globals.Ps = lightP_;
+            globals.Ns = surface.N;
             if (light.instance->Master().IsAmbientLight())
-                ambientGlobals_.Set(*batch_, worldFromCurrent_, n_, lightP_, &globals);
+                globals.P = surface.P, globals.N = surface.N, globals.I = surface.I;
             if (light.area) {
                 const uint64_t* seeds = batch_->randomSeeds.size() == size_t(all)
                                             ? batch_->randomSeeds.data()

@@ -20,6 +20,7 @@
 namespace gonio {
 
 struct ShadingFiles;
+class PointCloudStore;
 
 // The rays that trace() follows from one batch, all of one depth, in world space.
 struct TracedRays {
@@ -99,6 +100,12 @@ class RenderContext : public sl::ShadingContext {
         return textures_.MeasuredBrdf(*this, count, name, wIn, wOut, active, out);
     }
     void Trace(const float* P, const float* R, const uint8_t* active, float* out) override;
+    // bake3d(), texture3d(), bake(): point_cloud_lookups.cpp (clouds in world space).
+    bool BakePoints(const std::string& file, const float* P, const float* N, const uint8_t* active,
+                    const std::vector<sl::PointChannel>& channels) override;
+    bool LookupPoints(const std::string& file, const float* P, const float* N,
+                      const uint8_t* active,
+                      const std::vector<sl::PointChannel>& channels) override;
     // occlusion(), indirectdiffuse(), gather(), transmission(), visibility(): sampled_rays.cpp.
     bool TraceSampledRays(const std::string& what, const sl::SampledRays& rays,
                           sl::SampledHits* hits) override;
@@ -155,6 +162,7 @@ class RenderContext : public sl::ShadingContext {
     const Camera& camera_;
     NamedTextures textures_;
     ShadowMapCache& shadowMaps_;  // the render's, shared by all threads
+    PointCloudStore& pointClouds_;
     sl::ShaderExecutor& lightExecutor_;
     RayTracer& tracer_;
     int depth_;

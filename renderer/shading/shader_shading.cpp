@@ -461,6 +461,10 @@ class ShaderShading : public SurfaceShading {
         return false;
     }
 
+    bool FinishFrame(Diagnostics& diagnostics) override {
+        return textures_.pointClouds.WriteBaked(diagnostics);
+    }
+
   private:
     FrameShaders shaders_;
     const RayScene& scene_;

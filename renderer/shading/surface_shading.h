@@ -15,6 +15,8 @@
 
 namespace gonio {
 
+class Diagnostics;
+
 // The rays one pixel away from a point's ray along raster x and y (ray differentials as whole
 // rays), in world space. Shaders that take derivatives (Du, area, texture footprints, ...) are
 // run on the points these rays hit too, as the neighbours of the point (shader_shading.cpp).
@@ -72,6 +74,9 @@ class SurfaceShading {
     // Fills the width and kind of the AOV output->name; false when no shader of the frame has
     // it.
     virtual bool DescribeOutput(ShaderOutput*) const { return false; }
+    // After the last batch of the frame: writes what the shaders baked (bake3d()); false, with
+    // the errors reported, if a file could not be written.
+    virtual bool FinishFrame(Diagnostics&) { return true; }
 };
 
 // The default surface of primitives without a Surface shader: a squared facing ratio,
@@ -85,7 +90,6 @@ namespace gonio {
 
 class RayScene;
 class Camera;
-class Diagnostics;
 
 // Shading by the frame's shading-language shaders (Surface, Displacement, Atmosphere and the
 // light shaders); attribute states without a Surface use the default surface.

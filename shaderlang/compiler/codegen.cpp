@@ -405,8 +405,8 @@ int CodeGenerator::ExprAs(Node* e, const TypeSpec& to) { return Convert(Expr(e),
 
 int CodeGenerator::Convert(int reg, const TypeSpec& to) {
     const Register& r = p_->regs[reg];
+    if (r.isString || to.base == BaseType::Void || to.IsUnsized()) return reg;
     const int width = to.Width(colorComponents_) * (to.IsArray() ? to.arrayLength : 1);
-    if (r.isString || to.base == BaseType::Void) return reg;
     if (r.width == width && !(to.base == BaseType::Matrix && r.type.base == BaseType::Float)) {
         return reg;  // point-likes share a layout, so do colours of 3 and triples
     }
@@ -479,6 +479,8 @@ int CodeGenerator::Expr(Node* e) {
         case NodeKind::Call:
             if (e->function) return InlineCall(e);
             if (e->builtin >= 0) return BuiltinCall(e);
+            if (e->name == "arraylength")  // TypeChecker::CheckArrayLength
+                return Constant(float(p_->regs[Expr(e->Arguments()[0])].type.arrayLength));
             return Constant(0.0f);
         case NodeKind::Index: {
             int a = Expr(e->Array());

@@ -43,10 +43,10 @@ void Operands(const Program& p, const Instr& in, std::vector<int>* reads,
             const bool param = size_t(k) < params.size();
             if (param && params[size_t(k)].output) writes->push_back(list[3 + k]);
             // An output option's variable follows its name (a string constant).
-            if (!param && k > 0 && (info.flags & kOutputOptions)) {
+            if (!param && k > 0 && (info.flags & (kOutputOptions | kOutputPairs))) {
                 const Register& name = p.regs[list[3 + k - 1]];
                 if (name.isString && name.constant &&
-                    IsOutputOptionName(p.constStrings[size_t(name.constOffset)]))
+                    IsOutputOption(info.flags, p.constStrings[size_t(name.constOffset)]))
                     writes->push_back(list[3 + k]);
             }
         }

@@ -82,6 +82,7 @@ class Preprocessor {
     // macro that doubles itself 30 times would take gigabytes) is an error and gives "".
     std::string ExpandLine(const std::string& text, int line);
     long EvaluateCondition(const std::string& text, int line);
+    bool EndsInMacroCall(const std::string& text) const;
     bool Active() const { return conditionals_.empty() || conditionals_.back().active; }
     void Marker(int line) { out_ << "#line " << line << " \"" << *file_ << "\"\n"; }
 
@@ -136,7 +137,14 @@ void Preprocessor::ProcessFile(const std::string& text, const std::string& fileN
             ++lineNumber;
         }
         std::string trimmed = Trim(line);
-        if (!trimmed.empty() && trimmed[0] == '#') {
+        const bool directive = !trimmed.empty() && trimmed[0] == '#';
+        // A function-like macro's arguments may span lines, as in C (`ADD(1,` / `2)`): the
+        // lines are joined until the call's parenthesis closes.
+        while (!directive && Active() && EndsInMacroCall(line) && readLine(physical)) {
+            line += ' ' + physical;
+            ++lineNumber;
+        }
+        if (directive) {
             Directive(trimmed.substr(1), first, depth, Directory(fileName));
         } else if (Active()) {
             out_ << ExpandLine(line, first) << '\n';
@@ -274,6 +282,50 @@ void Preprocessor::Directive(const std::string& text, int line, int depth, const
         Error(line, 1, "unknown preprocessor directive #" + name);
     }
     out_ << '\n';
+}
+
+// Whether `text` ends inside the argument list of a call of a function-like macro.
+bool Preprocessor::EndsInMacroCall(const std::string& text) const {
+    size_t i = 0;
+    auto skipString = [&] {
+        for (++i; i < text.size() && text[i] != '"'; ++i) {
+            if (text[i] == '\\') ++i;
+        }
+        ++i;
+    };
+    while (i < text.size()) {
+        if (text[i] == '"') {
+            skipString();
+            continue;
+        }
+        if (!IsIdentStart(text[i])) {
+            // Skip a number whole, so that the suffix of 1.0f is not taken for a name.
+            if (std::isdigit(static_cast<unsigned char>(text[i])))
+                while (i < text.size() && (IsIdentChar(text[i]) || text[i] == '.')) ++i;
+            else
+                ++i;
+            continue;
+        }
+        size_t start = i;
+        while (i < text.size() && IsIdentChar(text[i])) ++i;
+        auto it = macros_.find(text.substr(start, i - start));
+        if (it == macros_.end() || !it->second.functionLike) continue;
+        size_t j = i;
+        while (j < text.size() && (text[j] == ' ' || text[j] == '\t')) ++j;
+        if (j >= text.size() || text[j] != '(') continue;
+        int nesting = 0;
+        for (i = j; i < text.size() && (i == j || nesting > 0);) {
+            if (text[i] == '"') {
+                skipString();
+                continue;
+            }
+            if (text[i] == '(') ++nesting;
+            if (text[i] == ')') --nesting;
+            ++i;
+        }
+        if (nesting > 0) return true;
+    }
+    return false;
 }
 
 // Expands macros in `text`. `disabled` holds the macros being expanded, which are not expanded

@@ -281,6 +281,16 @@ formal_defs
 
 formal_def
     : def { $$ = $1; }
+    | IDENT '[' ']' {
+          $$ = Name(state, NodeKind::VarDecl, @1, $1);
+          $$->declType.arrayLength = gonio::sl::TypeSpec::kUnsized;
+          $$->kids = {nullptr};
+      }
+    | IDENT '[' ']' '=' init {
+          $$ = Name(state, NodeKind::VarDecl, @1, $1);
+          $$->declType.arrayLength = gonio::sl::TypeSpec::kUnsized;
+          $$->kids = {$5};
+      }
     ;
 
 def

@@ -17,13 +17,30 @@ void TypeChecker::Error(const Node* at, const std::string& message) {
 
 int TypeChecker::ConversionCost(const TypeSpec& to, const TypeSpec& from, bool fromTuple) {
     if (to.IsArray() || from.IsArray()) {
-        return to.base == from.base && to.arrayLength == from.arrayLength ? 0 : -1;
+        // An unsized formal takes an array of any length (its body sees the argument's).
+        const bool length =
+            to.arrayLength == from.arrayLength || (to.IsUnsized() && from.IsArray());
+        return to.base == from.base && length ? 0 : -1;
     }
     if (to.base == from.base) return 0;
     if (from.base == BaseType::Float && (to.IsTriple() || to.base == BaseType::Matrix)) return 1;
     if (to.IsPointLike() && from.IsPointLike()) return 1;
     if (fromTuple && to.IsTriple() && from.IsTriple()) return 1;
+    // A colour and a point-like convert to each other component by component, as both peer
+    // compilers allow (Pixie's sdrc treats every triple alike; Aqsis's aqsl ranks these casts
+    // below those within the point family, as this cost does). Coerce rejects them when colours
+    // do not have 3 components.
+    if (to.IsTriple() && from.IsTriple()) return 2;
     return -1;
+}
+
+bool TypeChecker::ColorTripleConversion(const TypeSpec& from, const TypeSpec& to, const Node* at) {
+    const bool colorAndPoint = from.IsTriple() && to.IsTriple() && !from.IsArray() &&
+                               (from.base == BaseType::Color) != (to.base == BaseType::Color);
+    if (!colorAndPoint || colorComponents_ == 3) return true;
+    Error(at, "cannot convert " + ToString(from) + " to " + ToString(to) + ": colors have " +
+                  std::to_string(colorComponents_) + " components here (ColorSamples), not 3");
+    return false;
 }
 
 bool TypeChecker::NotBoolean(Node* e) {
@@ -50,6 +67,10 @@ bool TypeChecker::Coerce(Node* value, const TypeSpec& to, const std::string& wha
     }
     if (ConversionCost(to, value->type, tuple) < 0) {
         Error(value, what + ": cannot convert " + ToString(value->type) + " to " + ToString(to));
+        value->hasError = true;
+        return false;
+    }
+    if (!ColorTripleConversion(value->type, to, value)) {
         value->hasError = true;
         return false;
     }
@@ -154,6 +175,20 @@ void TypeChecker::CheckShader(Node* shader) {
     symbols_.Pop();
 }
 
+// A shader parameter `float k[] = {1, 2}` has its default's length (PRMan's and Pixie's rule);
+// a function formal stays unsized and takes its argument's.
+bool TypeChecker::SizeFromDefault(Node* decl, SymbolKind kind) {
+    if (kind == SymbolKind::Formal) return true;
+    const Node* init = decl->Initialiser();
+    if (!init || init->kind != NodeKind::InitList) {
+        Error(decl, "unsized array parameter '" + decl->name +
+                        "' needs a {...} default to give it a length");
+        return false;
+    }
+    decl->declType.arrayLength = int(init->Elements().size());
+    return true;
+}
+
 void TypeChecker::CheckDeclaration(Node* decl, Context& ctx, SymbolKind kind) {
     if (decl->isExtern) {
         Symbol* outer = symbols_.Find(decl->name);
@@ -179,6 +214,7 @@ void TypeChecker::CheckDeclaration(Node* decl, Context& ctx, SymbolKind kind) {
         Error(decl, "variables cannot be void");
         return;
     }
+    if (decl->declType.IsUnsized() && !SizeFromDefault(decl, kind)) return;
     Symbol* s = symbols_.Make();
     s->name = decl->name;
     s->kind = kind;

@@ -25,7 +25,8 @@ class TypeChecker {
     const std::vector<Symbol*>& Globals() const { return globals_; }
 
     // Whether `from` converts implicitly to `to` (float to triple or matrix, point-likes to
-    // each other, a tuple literal to any triple); -1 if not, else a cost (0 exact).
+    // each other, a tuple literal to any triple, colours and point-likes to each other at a
+    // higher cost); -1 if not, else a cost (0 exact).
     static int ConversionCost(const TypeSpec& to, const TypeSpec& from, bool fromTuple);
 
   private:
@@ -56,9 +57,14 @@ class TypeChecker {
     void CheckCall(Node* e, Context& ctx, const TypeSpec* expected);
     bool CheckUserCall(Node* e, const std::vector<Node*>& candidates);
     bool CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expected);
-    void CheckOutputOptions(Node* e, size_t first, Context& ctx);
+    void CheckOutputOptions(Node* e, unsigned flags, size_t first, Context& ctx);
     // Checks that `value` (already typed) may be stored in a `to`; types tuples to `to`.
     bool Coerce(Node* value, const TypeSpec& to, const std::string& what);
+    bool SizeFromDefault(Node* decl, SymbolKind kind);
+    void CheckArrayLength(Node* e);
+    // A colour ↔ point-like conversion copies 3 components: false (with an error at `at`) when
+    // colours have another number.
+    bool ColorTripleConversion(const TypeSpec& from, const TypeSpec& to, const Node* at);
     bool CheckLvalue(Node* target, Context& ctx, bool varyingValue);
     bool NotBoolean(Node* e);
 

@@ -403,11 +403,14 @@ void TypeChecker::CheckCast(Node* e, Context& ctx) {
     bool tuple = operand->kind == NodeKind::Tuple;
     bool ok = from.base == to.base ||
               (from.base == BaseType::Float && to.base != BaseType::String) ||
-              (from.IsPointLike() && to.IsPointLike()) || (tuple && to.IsTriple());
+              (from.IsTriple() && to.IsTriple());
     if (to.base == BaseType::Float && from.base != BaseType::Float) ok = false;
     if (!ok || from.IsArray()) {
-        Error(e, "cannot cast " + ToString(from) + " to " + ToString(to) +
-                     (from.IsTriple() && to.IsTriple() ? " (points and colors do not mix)" : ""));
+        Error(e, "cannot cast " + ToString(from) + " to " + ToString(to));
+        e->hasError = true;
+        return;
+    }
+    if (!tuple && !ColorTripleConversion(from, to, e)) {
         e->hasError = true;
         return;
     }
@@ -449,6 +452,10 @@ void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
         }
     }
     std::vector<Node*> functions = symbols_.FindFunctions(e->name);
+    if (functions.empty() && e->name == "arraylength") {
+        CheckArrayLength(e);
+        return;
+    }
     if (!functions.empty()) {
         if (CheckUserCall(e, functions)) {
             if (e->hasError) return;
@@ -460,6 +467,19 @@ void TypeChecker::CheckCall(Node* e, Context& ctx, const TypeSpec* expected) {
         }
     }
     if (!CheckBuiltinCall(e, ctx, expected)) e->hasError = true;
+}
+
+// arraylength(a) (RSL 2, PRMan and Pixie): arrays have fixed lengths here, so it is a constant,
+// the code generator's (an unsized formal's is its argument's, known where the call is inlined).
+void TypeChecker::CheckArrayLength(Node* e) {
+    const std::vector<Node*>& args = e->Arguments();
+    if (args.size() != 1 || !args[0]->type.IsArray()) {
+        Error(e, "arraylength() takes one array, not (" + ArgumentTypes(args) + ")");
+        e->hasError = true;
+        return;
+    }
+    e->type = MakeType(BaseType::Float);
+    e->varying = false;
 }
 
 bool TypeChecker::CheckUserCall(Node* e, const std::vector<Node*>& candidates) {
@@ -565,20 +585,27 @@ bool TypeChecker::CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expect
                    "argument " + std::to_string(i + 1) + " of '" + e->name + "'");
         }
     }
-    if (info.flags & kOutputOptions) CheckOutputOptions(e, params.size(), ctx);
+    if (info.flags & (kOutputOptions | kOutputPairs))
+        CheckOutputOptions(e, info.flags, params.size(), ctx);
     return true;
 }
 
-// ("environmentcolor", c) among a call's options: c is a colour variable the call writes.
-void TypeChecker::CheckOutputOptions(Node* e, size_t first, Context& ctx) {
+// Output options among a call's options (IsOutputOption): occlusion's ("environmentcolor", c)
+// writes the colour variable c, texture3d's ("name", v) any numeric variable v. With
+// kOutputPairs the options come in pairs, so only every second argument names one.
+void TypeChecker::CheckOutputOptions(Node* e, unsigned flags, size_t first, Context& ctx) {
     const std::vector<Node*>& args = e->Arguments();
-    for (size_t a = first; a + 1 < args.size(); ++a) {
+    const bool pairs = flags & kOutputPairs;
+    for (size_t a = first; a + 1 < args.size(); a += pairs ? 2 : 1) {
         const Node* name = args[a];
-        if (name->kind != NodeKind::String || !IsOutputOptionName(name->name)) continue;
+        if (name->kind != NodeKind::String || !IsOutputOption(flags, name->name)) continue;
         Node* target = args[a + 1];
-        if (target->kind != NodeKind::Identifier || target->type.base != BaseType::Color) {
-            Error(target, "the value of option \"" + name->name + "\" of '" + e->name +
-                              "' is a color variable it writes");
+        const bool typeOk = pairs ? target->type.base != BaseType::String && !target->type.IsArray()
+                                  : target->type.base == BaseType::Color;
+        if (target->kind != NodeKind::Identifier || !typeOk) {
+            Error(target, "the value of option \"" + name->name + "\" of '" + e->name + "' is a " +
+                              (pairs ? "float, color or point-like" : "color") +
+                              " variable it writes");
             continue;
         }
         CheckLvalue(target, ctx, true);

@@ -26,6 +26,7 @@ builtins::BuiltinList MakeTable() {
     builtins::AddBrdfBuiltins(&list);
     builtins::AddRayBuiltins(&list);
     builtins::AddGatherBuiltins(&list);
+    builtins::AddPointCloudBuiltins(&list);
     return list;
 }
 

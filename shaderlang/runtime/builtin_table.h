@@ -28,16 +28,21 @@ enum BuiltinFlags : unsigned {
     // sampled rays (ShadingContext::TraceSampledRays). Unlike trace()'s, their results are
     // shared by a hit's neighbour points, so they need no ray differentials.
     kSamplesRays = 1u << 7,
-    // occlusion: an option ("environmentcolor", c) writes its variable c (IsOutputOptionName).
+    // occlusion: an option ("environmentcolor", c) writes its variable c (IsOutputOption).
     kOutputOptions = 1u << 8,
     // transform("space", ...) and the like: the renderer's coordinate systems, known only when
     // the shader runs (so a constant operand is not folded with identity spaces).
     kUsesSpaces = 1u << 9,
+    // texture3d: every ("name", variable) pair after the parameters writes its variable.
+    kOutputPairs = 1u << 10,
 };
 
-// The options whose value is an output variable (of colour type) in calls flagged
-// kOutputOptions.
-inline bool IsOutputOptionName(const std::string& name) { return name == "environmentcolor"; }
+// Whether the value after the option `name` is an output variable in a call with `flags`:
+// every option's with kOutputPairs; with kOutputOptions, occlusion's ("environmentcolor", c),
+// of colour type.
+inline bool IsOutputOption(unsigned flags, const std::string& name) {
+    return (flags & kOutputPairs) || ((flags & kOutputOptions) && name == "environmentcolor");
+}
 
 struct BuiltinInfo {
     const char* name;

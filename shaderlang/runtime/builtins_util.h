@@ -130,6 +130,7 @@ void AddDerivativeBuiltins(BuiltinList* list);
 void AddBrdfBuiltins(BuiltinList* list);
 void AddRayBuiltins(BuiltinList* list);
 void AddGatherBuiltins(BuiltinList* list);
+void AddPointCloudBuiltins(BuiltinList* list);
 
 // The point-like and numeric type codes many rows are generated over.
 inline const char* const kPointLikeCodes[] = {"p", "v", "n"};

@@ -13,7 +13,10 @@ constexpr unsigned kAll = kS | kL | kD | kV | kI;
 
 // name, type, varying, readers, writers
 const GlobalVarInfo kGlobals[kGlobalCount] = {
-    {"P", BaseType::Point, true, kAll, kD},
+    // Surface shaders may write P, as Pixie's allow (displacement inside a surface shader): the
+    // new P serves the rest of the shader and its illuminance loops; what the camera sees is
+    // not re-traced (docs/shading-language.md, Writing P).
+    {"P", BaseType::Point, true, kAll, kS | kD},
     // Light shaders may write N and read I, as Pixie's do: its arealight normalises N (in an
     // area light the sample point's normal, docs/shading-language.md, Area lights); its
     // ambient lights run at the surface points and face N towards I.
@@ -31,8 +34,10 @@ const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"v", BaseType::Float, true, kS | kL | kD, 0},
     {"du", BaseType::Float, true, kS | kL | kD, 0},
     {"dv", BaseType::Float, true, kS | kL | kD, 0},
-    {"s", BaseType::Float, true, kS | kL | kD, 0},
-    {"t", BaseType::Float, true, kS | kL | kD, 0},
+    // Imagers read s, t as the pixel's place across the image (0 to 1 from the top left, Pixie's
+    // compiler lets every shader type read them; docs/shading-language.md, Imager shaders).
+    {"s", BaseType::Float, true, kS | kL | kD | kI, 0},
+    {"t", BaseType::Float, true, kS | kL | kD | kI, 0},
     {"Cs", BaseType::Color, true, kS, 0},
     {"Os", BaseType::Color, true, kS, 0},
     {"Ci", BaseType::Color, true, kS | kV | kI, kS | kV | kI},
@@ -41,6 +46,9 @@ const GlobalVarInfo kGlobals[kGlobalCount] = {
     {"Cl", BaseType::Color, true, kS | kL, kL},
     {"Ol", BaseType::Color, true, kS | kL, kL},
     {"Ps", BaseType::Point, true, kL, 0},
+    // Ns: the normal of the surface point being lit (PRMan's and Pixie's light shaders read it
+    // inside illuminate and solar): the surface's shading normal as the renderer found it.
+    {"Ns", BaseType::Normal, true, kL, 0},
     {"ncomps", BaseType::Float, false, kAll, 0},
     {"time", BaseType::Float, false, kAll, 0},
     {"dtime", BaseType::Float, false, kAll, 0},

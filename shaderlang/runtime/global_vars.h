@@ -32,6 +32,7 @@ enum GlobalId : int {
     kGlobalCl,
     kGlobalOl,
     kGlobalPs,
+    kGlobalNs,
     kGlobalNcomps,
     kGlobalTime,
     kGlobalDtime,

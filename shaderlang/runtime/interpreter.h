@@ -69,7 +69,9 @@ struct ExecState final : GlobalsView {
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
     unsigned backwardJumps = 0;
     bool stopped = false;
-    // Light loops.
+    // Light loops. inputP: the P the run was given, at which the context's cached lights are
+    // computed (a surface shader may since have written P).
+    const float* inputP = nullptr;
     const std::vector<LightResult>* lights = nullptr;
     int lightIndex = -1;
     std::vector<uint8_t> lit;

@@ -154,18 +154,19 @@ bool ColorToRgb(const std::string& space, const Imath::V3f& c, Imath::V3f* rgb) 
     return true;
 }
 
-// Whether an illuminance position register holds the surface's own P at every active point:
-// then the context's cached lights serve (RISpec §13.3.1 gathers light at the given position).
+// Whether an illuminance position register holds the P the run was given at every active
+// point: then the context's cached lights serve (RISpec §13.3.1 gathers light at the given
+// position). The P register itself need not: a surface shader may have written it.
 bool IsSurfaceP(const ExecState& x, int positionReg, int entry) {
+    if (positionReg < 0) return true;
     const int Preg = x.program->globals[kGlobalP];
-    if (positionReg < 0 || positionReg == Preg) return true;
-    if (Preg < 0) return false;
-    const RegRef at = x.Reg(positionReg), P = x.Reg(Preg);
+    if (!x.inputP) return positionReg == Preg;
+    const RegRef at = x.Reg(positionReg);
     const MaskEntry& e = x.masks[entry];
     for (int i = 0; i < x.n; ++i) {
         if (!e.all && !e.bits[i]) continue;
         for (int c = 0; c < 3; ++c)
-            if (at.Plane(c)[at.varying ? i : 0] != P.Plane(c)[P.varying ? i : 0]) return false;
+            if (at.Plane(c)[at.varying ? i : 0] != x.inputP[size_t(c) * x.n + i]) return false;
     }
     return true;
 }

@@ -148,6 +148,24 @@ TEST(ImagerShading, SeesRasterPositionOpacityAndPixelDerivatives) {
     }
 }
 
+// s, t: the pixel centre across the whole frame (Format 40 30), as Pixie's imagers read them.
+TEST(ImagerShading, SeesTheFramePositionAsST) {
+    ShaderFolder folder;
+    folder.Write("st.sl", "imager st() { Ci = color(s, t, 0); }\n");
+    Image image = TestImage();
+    const std::string messages = Messages([&](Diagnostics& d) {
+        EXPECT_TRUE(ApplyImager(BuildFrame("Format 40 30 1\nImager \"st\"\n", folder.Scene(), d), 0,
+                                image, d));
+    });
+    EXPECT_EQ(messages, "");
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            EXPECT_FLOAT_EQ(image.At(x, y)[0], (x + 3 + 0.5f) / 40) << "s at " << x << "," << y;
+            EXPECT_FLOAT_EQ(image.At(x, y)[1], (y + 5 + 0.5f) / 30) << "t at " << x << "," << y;
+        }
+    }
+}
+
 TEST(ImagerShading, ColorSamplesConvertOnlyWhatTheImagerChanged) {
     // One component: nRGB maps it to grey, RGBn averages RGB. A pixel of RGB (r, g, b) and
     // alpha a reaches the shader as (r + g + b)/3; background adds (1 - a)·0.5, and that change

@@ -5,6 +5,8 @@ environment() directions (issue 3):
 * illuminance(P + offset) runs the pointlight at the offset position: a plane with a shader that
   gathers 1 unit closer to the light shows 1/(x² + y² + (d - 1)²) (1%), points that gather at P
   itself 1/(x² + y² + d²), in the same shader and batch, with derivatives on (neighbour points);
+* a light shader's Ns is the normal of the surface point it lights, in camera space (a mirror
+  at 45 degrees through a rolled camera);
 * shinymetal's reflection of a lat-long environment map is the same wherever the camera looks
   from: a mirror at 45 degrees reflects the view ray to world -x; with the camera rolled by 90
   degrees about its view axis the pixel keeps its colour (the shader turns D into world space
@@ -34,6 +36,17 @@ surface gather(float dz = 1, from_x = -1e9) {
     Oi = 1;
     if (area(P) < 0) Ci = 0;  /* derivatives on: the batch has neighbour points */
 }
+""",
+    # Cl = |Ns|: the light shows the normal of the surface point it lights (issue 20).
+    "nslight.sl": """
+light nslight() {
+    illuminate (point "world" (0, 0, -10)) {
+        Cl = color(abs(xcomp(Ns)), abs(ycomp(Ns)), abs(zcomp(Ns)));
+    }
+}
+""",
+    "gatherall.sl": """
+surface gatherall() { Ci = 0; illuminance (P) { Ci += Cl; } Oi = 1; }
 """,
     # The renderer's old double transform, written out: D to world space twice.
     "twiceworld.sl": """
@@ -71,6 +84,7 @@ FRAMES = {
     "env_roll90": (camera(90), 'Surface "shinymetal" "Ka" 0 "Ks" 0 "Kr" 1 '
                    f'"texturename" "sky.tx"\n{MIRROR}'),
     "env_twice": (camera(90), f'Surface "twiceworld" "texturename" "sky.tx"\n{MIRROR}'),
+    "light_ns": (camera(90), f'LightSource "nslight" 1\nSurface "gatherall"\n{MIRROR}'),
 }
 
 # The map: 8 sectors of longitude with their own colours along the equator, centred on the
@@ -156,8 +170,18 @@ def environment_reflection_does_not_turn_with_the_camera(images):
            "would not catch a double transform)")
 
 
+def light_shader_ns_is_the_surface_normal(images):
+    """The mirror's normal ±(1, 0, 1)/√2 (world) seen through the camera rolled 90 degrees
+    about its view axis is ±(0, ±1, 1)/√2 in camera space: |Ns| = (0, r, r), r = 1/√2."""
+    r = 2 ** -0.5
+    got = centre(images["light_ns"])
+    expect(not differs(got, [0, r, r], 1e-3),
+           f"Cl = |Ns| is {got}, not the mirror's camera-space normal |.| = (0, {r:.4f}, {r:.4f})")
+
+
 CHECKS = [illuminance_gathers_at_the_given_position,
-          environment_reflection_does_not_turn_with_the_camera]
+          environment_reflection_does_not_turn_with_the_camera,
+          light_shader_ns_is_the_surface_normal]
 
 
 def scene_text():

@@ -36,14 +36,14 @@ TEST(ShadeCheck, TypeErrorsAreAllReported) {
     std::string e = Errors(
         "surface t() {\n"
         "  point p = P;\n"
-        "  color c = p;\n"
+        "  color c = \"p\";\n"
         "  float f = nosuch(1);\n"
         "  Ci = Cs + p;\n"
         "  float g = (u < 1);\n"
         "  Ci = undefinedvar;\n"
         "}\n");
     EXPECT_NE(
-        e.find("test.sl:3:13: error: in the initialiser of 'c': cannot convert point to color"),
+        e.find("test.sl:3:13: error: in the initialiser of 'c': cannot convert string to color"),
         std::string::npos)
         << e;
     EXPECT_NE(e.find("test.sl:4:13: error: unknown function 'nosuch'"), std::string::npos) << e;
@@ -81,11 +81,11 @@ TEST(ShadeCheck, UniformVaryingRules) {
 }
 
 TEST(ShadeCheck, ReadOnlyGlobalsAndParametersNeedDefaults) {
-    std::string e = Errors("surface t(float Kd;) { P = 0; L = 0; }\n");
+    std::string e = Errors("surface t(float Kd;) { Ng = 0; L = 0; }\n");
     EXPECT_NE(e.find("test.sl:1:17: error: shader parameter 'Kd' needs a default value"),
               std::string::npos)
         << e;
-    EXPECT_NE(e.find("error: cannot assign to 'P': it is read-only in surface shaders"),
+    EXPECT_NE(e.find("error: cannot assign to 'Ng': it is read-only in surface shaders"),
               std::string::npos)
         << e;
     EXPECT_NE(e.find("error: cannot assign to 'L': it is read-only in surface shaders"),

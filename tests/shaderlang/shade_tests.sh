@@ -57,10 +57,10 @@ expect matte-distant "Ci[0,0] = 0.5 0.5 0.5" -- shade "$shaders/matte.sl" -p Ka=
 
 cat > "$dir/err.sl" <<SL
 surface err() {
-    Ci = P;
+    Ci = "P";
 }
 SL
-expect type-error "$dir/err.sl:2:10: error: in the assignment to 'Ci': cannot convert point to color" -- \
+expect type-error "$dir/err.sl:2:10: error: in the assignment to 'Ci': cannot convert string to color" -- \
     shader "$dir/err.sl"
 "$gonio" shader "$dir/err.sl" >/dev/null 2>&1
 [ $? -eq 1 ] || { echo "FAIL shader exit status on errors"; failures=$((failures + 1)); }

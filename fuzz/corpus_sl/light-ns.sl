@@ -1,0 +1,1 @@
+light b() { illuminate (P, Ns, PI / 2) { Cl = color(Ns); } }
