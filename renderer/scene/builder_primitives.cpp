@@ -305,12 +305,6 @@ void SceneBuilder::Blobby(int, const std::vector<int>&, const std::vector<float>
     diagnostics_.WarningOnce("Blobby", loc, "Blobby is not supported: skipped");
 }
 
-void SceneBuilder::Procedural(const std::string& name, const std::vector<std::string>&,
-                              const std::vector<float>&, const FileLoc& loc) {
-    diagnostics_.WarningOnce("Procedural " + name, loc,
-                             "Procedural \"" + name + "\" is not supported: skipped");
-}
-
 // ---- texture making: not a renderer's job here ----------------------------------------------
 
 void SceneBuilder::MakeTexture(const std::string&, const std::string&, const std::string&,

@@ -176,8 +176,11 @@ class SceneBuilder : public RiTarget {
     void Blobby(int nleaf, const std::vector<int>& code, const std::vector<float>& floats,
                 const std::vector<std::string>& strings, const ParamList& params,
                 const FileLoc& loc) override;
+    // Reads the procedural in an attribute block of its own unless its bound lies outside the
+    // viewing frustum (builder_procedural.cpp).
     void Procedural(const std::string& name, const std::vector<std::string>& args,
-                    const std::vector<float>& bound6, const FileLoc& loc) override;
+                    const std::vector<float>& bound6, ProceduralReader& reader,
+                    const FileLoc& loc) override;
     void Geometry(const std::string& type, const ParamList& params, const FileLoc& loc) override;
 
     // External resources (RISpec §7).
