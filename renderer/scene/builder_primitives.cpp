@@ -65,7 +65,8 @@ bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
     return TypePrimVars(params, declarations_, state_->options.colorComponents, diagnostics_, vars);
 }
 
-void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
+void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc,
+                            std::shared_ptr<const TrimRegion> trim) {
     if (state_->primitiveSample > 0) {
         AddDeformationSample(geometry, loc);
         return;
@@ -79,6 +80,7 @@ void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
     shape.motionTimes = state_->transformTimes;
     shape.worldFromObjectMotion = state_->transformSamples;
     shape.loc = loc;
+    shape.trim = std::move(trim);
     // Handedness of camera space from object space; camera space is left-handed.
     const M44f cameraFromObject =
         state_->transform * (state_->inWorld ? state_->frame.options.cameraFromWorld : M44f());
@@ -190,9 +192,13 @@ void SceneBuilder::NuPatch(int nu, int uorder, const std::vector<float>& uknot, 
                            float vmin, float vmax, const ParamList& params, const FileLoc& loc) {
     PrimVarSet vars;
     if (!StartPrimitive("NuPatch", loc) || !TypeVars(params, &vars)) return;
-    AddGeometry("NuPatch",
-                MakeNuPatch(nu, uorder, uknot, umin, umax, nv, vorder, vknot, vmin, vmax, vars),
-                loc);
+    GeometryResult<TriangleMesh> mesh =
+        MakeNuPatch(nu, uorder, uknot, umin, umax, nv, vorder, vknot, vmin, vmax, vars);
+    if (!mesh) {
+        diagnostics_.Error(loc, "NuPatch: " + mesh.Error());
+        return;
+    }
+    AddShape(mesh.Take(), loc, state_->attributes.trimCurves);
 }
 
 void SceneBuilder::SubdivisionMesh(const std::string& scheme, const std::vector<int>& nverts,

@@ -40,6 +40,9 @@ struct SceneShape {
     std::vector<std::vector<V3f>> deformPositions;
     // Reverse the outward normal (Orientation "inside", or "lh"/"rh" against the handedness).
     bool flipNormals = false;
+    // A trimmed NuPatch (TrimCurve): only the points of its mesh whose `uv` lies in the region
+    // are surface. Null: untrimmed.
+    std::shared_ptr<const TrimRegion> trim;
     FileLoc loc;
 };
 

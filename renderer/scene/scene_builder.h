@@ -242,8 +242,10 @@ class SceneBuilder : public RiTarget {
                          TypedParam* out);
     // The attribute state for writing: primitives after the change get a new snapshot.
     Attributes& MutableAttributes();
-    // Adds a primitive's shape with the current attributes and transform.
-    void AddShape(ShapeGeometry geometry, const FileLoc& loc);
+    // Adds a primitive's shape with the current attributes and transform (and, for a NuPatch,
+    // the current trim curves).
+    void AddShape(ShapeGeometry geometry, const FileLoc& loc,
+                  std::shared_ptr<const TrimRegion> trim = nullptr);
     void JoinAreaLight(const FileLoc& loc);
     bool TypeVars(const ParamList& params, PrimVarSet* vars);
     template <class T>
