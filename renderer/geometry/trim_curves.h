@@ -15,6 +15,7 @@ namespace gonio {
 
 class TrimRegion {
   public:
+    TrimRegion() = default;  // no loops: contains nothing
     explicit TrimRegion(std::vector<std::vector<Imath::V2f>> loops);
 
     // Whether the parameter point (u, v) lies inside the trim loops (odd crossing count).
@@ -23,7 +24,7 @@ class TrimRegion {
 
   private:
     std::vector<std::vector<Imath::V2f>> loops_;  // closed polylines (last point joins the first)
-    Imath::V2f lo_, hi_;                          // their bounding box
+    Imath::V2f lo_{0, 0}, hi_{0, 0};              // their bounding box
 };
 
 // Evaluates TrimCurve's arguments (RISpec §5.2: ncurves per loop; then per curve its order, knots,
