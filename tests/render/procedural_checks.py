@@ -106,7 +106,7 @@ def check_hanging_program_is_killed(ws):
                            'Option "limits" "float proceduraltimeout" [0.5]\n'),
                      "hang", expect_code=1)
     seconds = time.monotonic() - start
-    expect("hang.rib:10:1: error: Procedural RunProgram \"hang.sh\" did not finish within 0.5 s"
+    expect("hang.rib:12:1: error: Procedural RunProgram \"hang.sh\" did not finish within 0.5 s"
            in proc.stderr, f"unexpected message:\n{proc.stderr}")
     expect(seconds < 20, f"the render took {seconds:.1f} s")
 
@@ -162,7 +162,7 @@ def check_trimmed_square_is_a_disc(ws):
 def check_bad_trim_curve_is_located(ws):
     proc = ws.render(frame("badtrim.tif", "TrimCurve [1] [3] [0 0 0 1 1 1] [0] [1] [3] [0 1] "
                            "[0 0 1] [1 1 1]\n" + SQUARE), "badtrim", expect_code=1)
-    expect("badtrim.rib:10:1: error: TrimCurve: u, v and w need 3 values" in proc.stderr,
+    expect("badtrim.rib:11:1: error: TrimCurve: u, v and w need 3 values" in proc.stderr,
            f"unexpected message:\n{proc.stderr}")
 
 
