@@ -8,7 +8,8 @@
 // not parameterised over the unit square). Uniform variables have one value per knot span
 // ((nu − uorder + 1)·(nv − vorder + 1), empty spans included) and varying ones one per span
 // corner ((nu − uorder + 2)·(nv − vorder + 2)); vertex variables use the B-spline basis
-// without the weights of "Pw". TrimCurve is not applied: trimmed surfaces render untrimmed.
+// without the weights of "Pw". TrimCurve is applied at hit time (SceneShape::trim, set by the
+// scene builder): the tessellation itself is the whole patch.
 
 #include <vector>
 

@@ -4,6 +4,7 @@
 
 #include "base/math.h"
 #include "renderer/raytrace/motion.h"
+#include "renderer/scene/view_frustum.h"
 
 namespace gonio {
 namespace {
@@ -36,17 +37,7 @@ Camera::Camera(const Options& options)
       yres_(options.yres),
       nearClip_(options.nearClip),
       farClip_(options.farClip) {
-    // RISpec §4.1.1: the default screen window spans [-1,1] along the frame's shorter side.
-    const float aspect = options.frameAspect > 0
-                             ? options.frameAspect
-                             : options.xres * options.pixelAspect / float(options.yres);
-    if (options.screenWindowSet) {
-        for (int i = 0; i < 4; ++i) screen_[i] = options.screenWindow[i];
-    } else if (aspect >= 1) {
-        screen_[0] = -aspect, screen_[1] = aspect, screen_[2] = -1, screen_[3] = 1;
-    } else {
-        screen_[0] = -1, screen_[1] = 1, screen_[2] = -1 / aspect, screen_[3] = 1 / aspect;
-    }
+    EffectiveScreenWindow(options, screen_);
     if (perspective_ && std::isfinite(options.fstop) && options.fstop > 0 &&
         options.focalLength > 0 && options.focalDistance > 0) {
         lensRadius_ = 0.5f * options.focalLength / options.fstop;

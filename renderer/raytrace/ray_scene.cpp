@@ -11,6 +11,7 @@
 #include <string>
 
 #include "base/overloaded.h"
+#include "renderer/geometry/trim_curves.h"
 #include "renderer/raytrace/motion.h"
 #include "renderer/raytrace/shape_evaluation.h"
 #include "renderer/raytrace/solid_tree.h"
@@ -252,6 +253,31 @@ void RayScene::Impl::Attach(SceneLevel& level, RTCGeometry geometry,
     rtcReleaseGeometry(geometry);  // the scene holds it now
 }
 
+namespace {
+
+// A trimmed NuPatch (TrimCurve): hits whose surface (u,v) lies outside the trim loops are no hits.
+void TrimFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* shape = static_cast<const SceneShape*>(args->geometryUserPtr);
+    const auto* mesh = &std::get<TriangleMesh>(shape->geometry);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const uint32_t* t = &mesh->indices[3 * RTCHitN_primID(args->hit, args->N, i)];
+        const float b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i);
+        const V2f uv = (1 - b1 - b2) * mesh->uv[t[0]] + b1 * mesh->uv[t[1]] + b2 * mesh->uv[t[2]];
+        if (!shape->trim->Contains(uv)) args->valid[i] = 0;
+    }
+}
+
+void SetTrimFilter(RTCGeometry g, const SceneShape& shape) {
+    const auto& mesh = std::get<TriangleMesh>(shape.geometry);
+    if (mesh.uv.size() != mesh.positions.size()) return;
+    rtcSetGeometryUserData(g, const_cast<SceneShape*>(&shape));
+    rtcSetGeometryIntersectFilterFunction(g, TrimFilter);
+    rtcSetGeometryOccludedFilterFunction(g, TrimFilter);
+}
+
+}  // namespace
+
 RTCGeometry RayScene::Impl::MakeMesh(const TriangleMesh& mesh, const M44f& m) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
@@ -468,6 +494,7 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
                                              RTCGeometry made = MakeMesh(mesh, m);
                                              if (!shape.deformPositions.empty())
                                                  SetDeformationSteps(made, shape, m, 3);
+                                             if (shape.trim) SetTrimFilter(made, shape);
                                              return made;
                                          },
                                          [&](const QuadricShape& quadric) -> RTCGeometry {

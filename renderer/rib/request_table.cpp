@@ -206,7 +206,7 @@ const std::vector<RequestRule> kRules = {
     {"Blobby", "iIFS", true,
      [](A a, T t, H) { t.Blobby(a.I(0), a.IA(1), a.FA(2), a.SA(3), a.Params(), a.Loc()); }},
     {"Procedural", "sSF", false,
-     [](A a, T t, H) { t.Procedural(a.S(0), a.SA(1), a.FA(2), a.Loc()); }},
+     [](A a, T, H h) { h.Procedural(a.S(0), a.SA(1), a.FA(2), a.Loc()); }},
     {"Geometry", "s", true, [](A a, T t, H) { t.Geometry(a.S(0), a.Params(), a.Loc()); }},
 
     // External resources (RISpec §7).

@@ -27,6 +27,9 @@ class ParserHooks {
   public:
     virtual ~ParserHooks() = default;
     virtual void ReadArchive(const std::string& name, const FileLoc& loc) = 0;
+    // Passes a Procedural on to the target with a reader for the RIB it stands for.
+    virtual void Procedural(const std::string& name, const std::vector<std::string>& args,
+                            const std::vector<float>& bound6, const FileLoc& loc) = 0;
     virtual void OptionSeen(const std::string& name, const ParamList& params) = 0;
     virtual void ColorSamplesSeen(int ncomps) = 0;
     // An extension request that has no RiTarget method: warns once and ignores it.

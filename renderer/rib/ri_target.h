@@ -16,6 +16,20 @@
 
 namespace gonio {
 
+// What the parser offers a target with a Procedural request (RISpec 3.2 §5.7): the RIB the
+// procedural stands for (DelayedReadArchive's archive, RunProgram's answer), read in place, as
+// if it followed the request. The target chooses whether to read it (SceneBuilder: when the
+// bound can be seen), wraps it in an attribute block, and may call Read only during its
+// Procedural call. Errors (a missing archive, a failing program, DynamicLoad, an unknown
+// procedural) are reported at the Procedural request when Read is called.
+class ProceduralReader {
+  public:
+    virtual ~ProceduralReader() = default;
+    // `detail`: the bound's area in raster pixels, which a RunProgram program is told; a
+    // program still running after `timeoutSeconds` (<= 0: no limit) is killed.
+    virtual void Read(float detail, double timeoutSeconds) = 0;
+};
+
 class RiTarget {
   public:
     virtual ~RiTarget() = default;
@@ -169,7 +183,8 @@ class RiTarget {
                         const std::vector<std::string>& strings, const ParamList& params,
                         const FileLoc& loc) = 0;
     virtual void Procedural(const std::string& name, const std::vector<std::string>& args,
-                            const std::vector<float>& bound6, const FileLoc& loc) = 0;
+                            const std::vector<float>& bound6, ProceduralReader& reader,
+                            const FileLoc& loc) = 0;
     virtual void Geometry(const std::string& type, const ParamList& params, const FileLoc& loc) = 0;
 
     // External resources (RISpec §7).

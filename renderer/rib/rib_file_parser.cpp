@@ -10,69 +10,15 @@
 #include <cstring>
 
 #include "renderer/rib/rib_session.h"
+#include "renderer/rib/string_escapes.h"
 #include "rib_grammar.hpp"
 
 namespace gonio {
 namespace {
 
-int OctalDigit(char c) { return c >= '0' && c <= '7' ? c - '0' : -1; }
-
-int HexDigit(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
-// Decodes the C escapes of a string token's body (without its quotes).
-void DecodeEscapes(const char* text, int length, std::string* out) {
-    out->clear();
-    for (int i = 0; i < length; ++i) {
-        if (text[i] != '\\' || i + 1 == length) {
-            out->push_back(text[i]);
-            continue;
-        }
-        const char c = text[++i];
-        switch (c) {
-            case 'n':
-                out->push_back('\n');
-                break;
-            case 't':
-                out->push_back('\t');
-                break;
-            case 'r':
-                out->push_back('\r');
-                break;
-            case 'b':
-                out->push_back('\b');
-                break;
-            case 'f':
-                out->push_back('\f');
-                break;
-            case 'a':
-                out->push_back('\a');
-                break;
-            case 'v':
-                out->push_back('\v');
-                break;
-            case 'x': {
-                int value = 0, digits = 0;
-                while (digits < 2 && i + 1 < length && HexDigit(text[i + 1]) >= 0)
-                    value = value * 16 + HexDigit(text[++i]), ++digits;
-                out->push_back(digits ? static_cast<char>(value) : 'x');
-                break;
-            }
-            default:
-                if (OctalDigit(c) >= 0) {
-                    int value = OctalDigit(c), digits = 1;
-                    while (digits < 3 && i + 1 < length && OctalDigit(text[i + 1]) >= 0)
-                        value = value * 8 + OctalDigit(text[++i]), ++digits;
-                    out->push_back(static_cast<char>(value));
-                } else {
-                    out->push_back(c);  // \\ \" \' \? and anything else stand for themselves
-                }
-        }
-    }
+// Binary input has no lines to speak of: its errors also say where they are in bytes.
+std::string AtOffset(std::int64_t offset) {
+    return "binary RIB at byte offset " + std::to_string(offset) + ": ";
 }
 
 }  // namespace
@@ -86,8 +32,16 @@ RibFileParser::RibFileParser(RibSession& session, std::shared_ptr<const std::str
     : session_(session), name_(std::move(name)), text_(&text) {}
 
 int RibFileParser::ReadInput(char* buffer, int maxSize) {
+    if (text_) {
+        const std::size_t got = std::min(static_cast<std::size_t>(maxSize),
+                                         text_->size() - static_cast<std::size_t>(delivered_));
+        std::memcpy(buffer, text_->data() + delivered_, got);
+        delivered_ += static_cast<std::int64_t>(got);
+        return static_cast<int>(got);
+    }
     if (!input_ || readFailed_) return 0;
     const int got = gzread(input_, buffer, static_cast<unsigned>(maxSize));
+    if (got > 0) delivered_ += got;
     int code = 0;
     const char* why = gzerror(input_, &code);
     // gzread hands over what it could decompress of a cut stream and flags the early end as
@@ -140,7 +94,51 @@ void RibFileParser::SetLookahead(int token, int tokenLine, int tokenColumn) {
     }
 }
 
-bool RibFileParser::ShouldStop() const { return session_.Stopped(); }
+bool RibFileParser::ShouldStop() const { return session_.Stopped() || inputEnded_; }
+
+int RibFileParser::BinaryToken(int code, ByteSource& bytes, double* number, int* index,
+                               int tokenLine, int tokenColumn) {
+    const std::int64_t start = offset - 1;
+    gonio::BinaryToken token = binary_.Decode(code, bytes);
+    switch (token.kind) {
+        case BinaryToken::Kind::Definition:
+            return 0;
+        case BinaryToken::Kind::Number:
+            *number = token.number;
+            return RIB_NUMBER;
+        case BinaryToken::Kind::String: {
+            std::size_t slot = 0;
+            values_.NewString(&slot) = std::move(token.text);
+            *index = static_cast<int>(slot);
+            return RIB_STRING;
+        }
+        case BinaryToken::Kind::Request:
+            *index = LookupRequest(token.text.data(), static_cast<int>(token.text.size()));
+            return RIB_REQUEST;
+        case BinaryToken::Kind::ArrayBegin:
+            return '[';
+        case BinaryToken::Kind::ArrayEnd:
+        case BinaryToken::Kind::Error:
+            break;
+    }
+    inputEnded_ = token.truncated;
+    LexError(tokenLine, tokenColumn, AtOffset(start) + token.text);
+    return RIB_LEX_ERROR;
+}
+
+int RibFileParser::BinaryArrayItem(ByteSource& bytes, double* number, int tokenLine,
+                                   int tokenColumn) {
+    const std::int64_t start = offset;
+    gonio::BinaryToken item = binary_.NextArrayItem(bytes);
+    if (item.kind == BinaryToken::Kind::ArrayEnd) return ']';
+    if (item.kind == BinaryToken::Kind::Number) {
+        *number = item.number;
+        return RIB_NUMBER;
+    }
+    inputEnded_ = true;
+    LexError(tokenLine, tokenColumn, AtOffset(start) + item.text);
+    return RIB_LEX_ERROR;
+}
 
 void RibFileParser::AddNumber(double number, int valueLine, int valueColumn) {
     RibValue value;

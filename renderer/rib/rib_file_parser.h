@@ -6,12 +6,14 @@
 
 #include <zlib.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
 #include "base/file_loc.h"
 #include "renderer/rib/request_table.h"
 #include "renderer/rib/request_values.h"
+#include "renderer/rib/rib_binary.h"
 
 namespace gonio {
 
@@ -26,18 +28,26 @@ class RibFileParser {
     // Reads the whole input, calling the session's target once per request (rib_lexer.l).
     void Parse();
 
-    // The lexer's position: the line and column of the next character.
+    // The lexer's position: the line and column of the next character, and the bytes consumed.
     int line = 1;
     int column = 1;
+    std::int64_t offset = 0;
 
     // Called by the lexer.
     int ReadInput(char* buffer, int maxSize);
+    std::int64_t Delivered() const { return delivered_; }  // bytes ReadInput has handed over
     bool ParseNumber(const char* text, int length, double* value);
     int NewString(const char* text, int length);  // decodes C escapes; returns the pool index
     // A request table index, or for an unknown name a negative number that Dispatch turns back
     // into the name.
     int LookupRequest(const char* text, int length);
     void LexError(int errorLine, int errorColumn, const std::string& message);
+    // A binary token (RISpec App. C.2) whose code byte was just read: returns the grammar token
+    // and sets `number` or `index`, or returns 0 for a definition, which is no token.
+    int BinaryToken(int code, ByteSource& bytes, double* number, int* index, int tokenLine,
+                    int tokenColumn);
+    bool InBinaryArray() const { return binary_.InArray(); }
+    int BinaryArrayItem(ByteSource& bytes, double* number, int tokenLine, int tokenColumn);
     void SetLookahead(int token, int tokenLine, int tokenColumn);
     bool ShouldStop() const;
 
@@ -60,6 +70,9 @@ class RibFileParser {
     std::shared_ptr<const std::string> name_;
     gzFile input_ = nullptr;
     const std::string* text_ = nullptr;
+    std::int64_t delivered_ = 0;
+    bool inputEnded_ = false;  // a binary token was cut off by the end of the input
+    BinaryDecoder binary_;
 
     RequestValues values_;
     RequestArgs args_;         // reused so that its vectors keep their capacity

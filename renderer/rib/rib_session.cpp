@@ -113,12 +113,15 @@ std::string RibSession::Chain(const std::string& last) const {
     return chain + last;
 }
 
+bool RibSession::CheckDepth(const std::string& next, const FileLoc& loc) {
+    if (inputs_.size() < kMaxArchiveDepth) return true;
+    Error(loc, "ReadArchive and procedurals nested more than " + std::to_string(kMaxArchiveDepth) +
+                   " inputs deep: " + Chain(next));
+    return false;
+}
+
 void RibSession::ReadArchive(const std::string& name, const FileLoc& loc) {
-    if (inputs_.size() >= kMaxArchiveDepth) {
-        Error(loc, "ReadArchive nested more than " + std::to_string(kMaxArchiveDepth) +
-                       " archives deep: " + Chain(name));
-        return;
-    }
+    if (!CheckDepth(name, loc)) return;
     std::string path, searched;
     if (!FindArchive(name, inputs_.back().path, &path, &searched)) {
         Error(loc, "cannot find archive \"" + name + "\" (looked for " + searched + ")");

@@ -26,6 +26,11 @@ class RibSession : public ParserHooks {
     bool Stopped() const { return stopped_; }
 
     void ReadArchive(const std::string& name, const FileLoc& loc) override;
+    void Procedural(const std::string& name, const std::vector<std::string>& args,
+                    const std::vector<float>& bound6, const FileLoc& loc) override;
+    // What ProceduralReader::Read does for the session's procedurals (rib_procedurals.cpp).
+    void ReadProcedural(const std::string& name, const std::vector<std::string>& args, float detail,
+                        double timeoutSeconds, const FileLoc& loc);
     void OptionSeen(const std::string& name, const ParamList& params) override;
     void ColorSamplesSeen(int ncomps) override;
     void Ignore(const char* request, const FileLoc& loc) override;
@@ -38,6 +43,11 @@ class RibSession : public ParserHooks {
     };
     bool FindArchive(const std::string& name, const std::string& includingPath, std::string* found,
                      std::string* searched) const;
+    bool CheckDepth(const std::string& next, const FileLoc& loc);
+    void RunProgram(const std::vector<std::string>& args, float detail, double timeoutSeconds,
+                    const FileLoc& loc);
+    // The program of a RunProgram command, found next to the including file when it is there.
+    std::string ResolveProgram(const std::string& command) const;
     std::string Chain(const std::string& last) const;
 
     RiTarget& target_;

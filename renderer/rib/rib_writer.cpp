@@ -494,7 +494,7 @@ void RibWriter::Blobby(int nleaf, const std::vector<int>& code, const std::vecto
 }
 
 void RibWriter::Procedural(const std::string& name, const std::vector<std::string>& args,
-                           const std::vector<float>& bound6, const FileLoc&) {
+                           const std::vector<float>& bound6, ProceduralReader&, const FileLoc&) {
     Emit("Procedural", name, args, bound6);
 }
 

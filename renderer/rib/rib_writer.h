@@ -143,8 +143,10 @@ class RibWriter : public RiTarget {
     void Blobby(int nleaf, const std::vector<int>& code, const std::vector<float>& floats,
                 const std::vector<std::string>& strings, const ParamList& params,
                 const FileLoc& loc) override;
+    // Prints the request as it is; the procedural is not read.
     void Procedural(const std::string& name, const std::vector<std::string>& args,
-                    const std::vector<float>& bound6, const FileLoc& loc) override;
+                    const std::vector<float>& bound6, ProceduralReader& reader,
+                    const FileLoc& loc) override;
     void Geometry(const std::string& type, const ParamList& params, const FileLoc& loc) override;
     void MakeTexture(const std::string& picture, const std::string& texture,
                      const std::string& swrap, const std::string& twrap, const std::string& filter,

@@ -13,6 +13,7 @@
 
 #include "base/file_loc.h"
 #include "renderer/geometry/basis.h"
+#include "renderer/geometry/trim_curves.h"
 #include "renderer/rib/param_list.h"
 #include "renderer/scene/param_dict.h"
 
@@ -64,7 +65,9 @@ struct Attributes {
     float shadingRate = 1;
     bool matte = false;
     PatchBasis ubasis, vbasis;  // bezier unless Basis says otherwise
-    std::string identifier;     // Attribute "identifier" "name"
+    // TrimCurve: the region of (u,v) the following NuPatches keep; null: untrimmed.
+    std::shared_ptr<const TrimRegion> trimCurves;
+    std::string identifier;  // Attribute "identifier" "name"
     // Every Attribute request by name, merged and typed (attribute() reads them too).
     std::map<std::string, ParamDict> user;
 };

@@ -285,13 +285,18 @@ void SceneBuilder::Basis(const RtBasis& ubasis, int ustep, const RtBasis& vbasis
     resolve(vbasis, vstep, &MutableAttributes().vbasis);
 }
 
-void SceneBuilder::TrimCurve(const std::vector<int>&, const std::vector<int>&,
-                             const std::vector<float>&, const std::vector<float>&,
-                             const std::vector<float>&, const std::vector<int>&,
-                             const std::vector<float>&, const std::vector<float>&,
-                             const std::vector<float>&, const FileLoc& loc) {
-    diagnostics_.WarningOnce("TrimCurve", loc,
-                             "TrimCurve is not supported yet: NuPatch surfaces are untrimmed");
+// RISpec §5.2: the trim curves are an attribute, applied to the NuPatches that follow.
+void SceneBuilder::TrimCurve(const std::vector<int>& ncurves, const std::vector<int>& order,
+                             const std::vector<float>& knot, const std::vector<float>& min,
+                             const std::vector<float>& max, const std::vector<int>& n,
+                             const std::vector<float>& u, const std::vector<float>& v,
+                             const std::vector<float>& w, const FileLoc& loc) {
+    GeometryResult<TrimRegion> region = MakeTrimRegion(ncurves, order, knot, min, max, n, u, v, w);
+    if (!region) {
+        diagnostics_.Error(loc, region.Error());
+        return;
+    }
+    MutableAttributes().trimCurves = std::make_shared<const TrimRegion>(region.Take());
 }
 
 // ---- transformations ------------------------------------------------------------------------

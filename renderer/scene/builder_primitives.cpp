@@ -68,7 +68,8 @@ bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
     return TypePrimVars(params, declarations_, state_->options.colorComponents, diagnostics_, vars);
 }
 
-void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
+void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc,
+                            std::shared_ptr<const TrimRegion> trim) {
     if (state_->primitiveSample > 0) {
         AddDeformationSample(geometry, loc);
         return;
@@ -82,6 +83,7 @@ void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc) {
     shape.motionTimes = state_->transformTimes;
     shape.worldFromObjectMotion = state_->transformSamples;
     shape.loc = loc;
+    shape.trim = std::move(trim);
     // Handedness of camera space from object space; camera space is left-handed.
     const M44f cameraFromObject =
         state_->transform * (state_->inWorld ? state_->frame.options.cameraFromWorld : M44f());
@@ -194,9 +196,13 @@ void SceneBuilder::NuPatch(int nu, int uorder, const std::vector<float>& uknot, 
                            float vmin, float vmax, const ParamList& params, const FileLoc& loc) {
     PrimVarSet vars;
     if (!StartPrimitive("NuPatch", loc) || !TypeVars(params, &vars)) return;
-    AddGeometry("NuPatch",
-                MakeNuPatch(nu, uorder, uknot, umin, umax, nv, vorder, vknot, vmin, vmax, vars),
-                loc);
+    GeometryResult<TriangleMesh> mesh =
+        MakeNuPatch(nu, uorder, uknot, umin, umax, nv, vorder, vknot, vmin, vmax, vars);
+    if (!mesh) {
+        diagnostics_.Error(loc, "NuPatch: " + mesh.Error());
+        return;
+    }
+    AddShape(mesh.Take(), loc, state_->attributes.trimCurves);
 }
 
 void SceneBuilder::SubdivisionMesh(const std::string& scheme, const std::vector<int>& nverts,
@@ -327,15 +333,7 @@ void SceneBuilder::Blobby(int nleaf, const std::vector<int>& code, const std::ve
     if (blobby.Value().mesh.TriangleCount() > 0) AddShape(std::move(blobby.Value().mesh), loc);
 }
 
-// ---- not rendered ---------------------------------------------------------------------------
-
-void SceneBuilder::Procedural(const std::string& name, const std::vector<std::string>&,
-                              const std::vector<float>&, const FileLoc& loc) {
-    diagnostics_.WarningOnce("Procedural " + name, loc,
-                             "Procedural \"" + name + "\" is not supported: skipped");
-}
-
-// ---- shadow maps: not a renderer's job here -------------------------------------------------
+// ---- errors ----------------------------------------------------------------------------------
 
 void SceneBuilder::ErrorHandler(const std::string& handler, const FileLoc& loc) {
     if (handler != "print" && handler != "ignore" && handler != "abort") {

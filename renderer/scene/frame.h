@@ -45,6 +45,9 @@ struct SceneShape {
     // The "primitive" solid (index into Frame::solids) whose surface this shape is part of;
     // −1 for a shape outside every SolidBegin block.
     int solid = -1;
+    // A trimmed NuPatch (TrimCurve): only the points of its mesh whose `uv` lies in the region
+    // are surface. Null: untrimmed.
+    std::shared_ptr<const TrimRegion> trim;
     FileLoc loc;
 };
 

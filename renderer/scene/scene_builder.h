@@ -182,8 +182,11 @@ class SceneBuilder : public RiTarget {
     void Blobby(int nleaf, const std::vector<int>& code, const std::vector<float>& floats,
                 const std::vector<std::string>& strings, const ParamList& params,
                 const FileLoc& loc) override;
+    // Reads the procedural in an attribute block of its own unless its bound lies outside the
+    // viewing frustum (builder_procedural.cpp).
     void Procedural(const std::string& name, const std::vector<std::string>& args,
-                    const std::vector<float>& bound6, const FileLoc& loc) override;
+                    const std::vector<float>& bound6, ProceduralReader& reader,
+                    const FileLoc& loc) override;
     void Geometry(const std::string& type, const ParamList& params, const FileLoc& loc) override;
 
     // External resources (RISpec §7).
@@ -248,8 +251,10 @@ class SceneBuilder : public RiTarget {
                          TypedParam* out);
     // The attribute state for writing: primitives after the change get a new snapshot.
     Attributes& MutableAttributes();
-    // Adds a primitive's shape with the current attributes and transform.
-    void AddShape(ShapeGeometry geometry, const FileLoc& loc);
+    // Adds a primitive's shape with the current attributes and transform (and, for a NuPatch,
+    // the current trim curves).
+    void AddShape(ShapeGeometry geometry, const FileLoc& loc,
+                  std::shared_ptr<const TrimRegion> trim = nullptr);
     void JoinAreaLight(const FileLoc& loc);
     bool TypeVars(const ParamList& params, PrimVarSet* vars);
     template <class T>

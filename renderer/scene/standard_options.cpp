@@ -23,6 +23,7 @@ constexpr StandardParam kStandardParams[] = {
     {"Option", "limits", "bucketsize", "uniform integer[2]"},
     {"Option", "limits", "gridsize", "uniform integer"},
     {"Option", "limits", "shadertimeout", "uniform float"},
+    {"Option", "limits", "proceduraltimeout", "uniform float"},
     {"Option", "limits", "eyesplits", "uniform integer"},
     {"Option", "limits", "texturememory", "uniform integer"},
     {"Option", "limits", "othreshold", "uniform color"},

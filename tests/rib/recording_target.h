@@ -294,10 +294,17 @@ class RecordingTarget : public RiTarget {
                 const FileLoc& loc) override {
         Record(loc, "Blobby", nleaf, code, floats, strings, params);
     }
+    // Records the request, then reads the procedural if `readProcedurals` (with the detail and
+    // time-out below), so that tests see what it expands to.
     void Procedural(const std::string& name, const std::vector<std::string>& args,
-                    const std::vector<float>& bound6, const FileLoc& loc) override {
+                    const std::vector<float>& bound6, ProceduralReader& reader,
+                    const FileLoc& loc) override {
         Record(loc, "Procedural", name, args, bound6);
+        if (readProcedurals) reader.Read(proceduralDetail, proceduralTimeout);
     }
+    bool readProcedurals = false;
+    float proceduralDetail = 100;
+    double proceduralTimeout = 10;
     void Geometry(const std::string& type, const ParamList& params, const FileLoc& loc) override {
         Record(loc, "Geometry", type, params);
     }

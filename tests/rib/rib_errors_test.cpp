@@ -46,7 +46,7 @@ const ErrorCase kCases[] = {
     {"WorldEnd \"Kd\" 1\nWorldBegin", "test.rib:1:10: error: WorldEnd takes no parameter list"},
     {"Translate 1e999 0 0\nWorldBegin", "test.rib:1:11: error: number out of range: 1e999"},
     {"Translate @ 0 0\nWorldBegin", "test.rib:1:11: error: unexpected character '@'"},
-    {"\x01\nWorldBegin", "test.rib:1:1: error: unexpected byte 0x01 (binary RIB is not supported)"},
+    {"\x01\nWorldBegin", "test.rib:1:1: error: unexpected byte 0x01"},
 };
 
 class ErrorTest : public ::testing::TestWithParam<ErrorCase> {};

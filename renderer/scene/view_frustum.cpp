@@ -1,0 +1,74 @@
+#include "renderer/scene/view_frustum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "base/math.h"
+
+namespace gonio {
+namespace {
+
+using Imath::V3f;
+
+// The box's corners in camera space.
+void Corners(const Imath::M44f& cameraFromObject, const float b[6], V3f corners[8]) {
+    for (int i = 0; i < 8; ++i)
+        cameraFromObject.multVecMatrix(V3f(b[i & 1], b[2 + ((i >> 1) & 1)], b[4 + (i >> 2)]),
+                                       corners[i]);
+}
+
+// Whether every corner has a negative value of `f` (it lies outside that plane).
+template <typename Plane>
+bool AllOutside(const V3f corners[8], Plane f) {
+    return std::all_of(corners, corners + 8, [&](const V3f& c) { return f(c) < 0; });
+}
+
+}  // namespace
+
+void EffectiveScreenWindow(const Options& options, float window[4]) {
+    const float aspect = options.frameAspect > 0
+                             ? options.frameAspect
+                             : options.xres * options.pixelAspect / float(options.yres);
+    if (options.screenWindowSet) {
+        std::copy(options.screenWindow, options.screenWindow + 4, window);
+    } else if (aspect >= 1) {
+        window[0] = -aspect, window[1] = aspect, window[2] = -1, window[3] = 1;
+    } else {
+        window[0] = -1, window[1] = 1, window[2] = -1 / aspect, window[3] = 1 / aspect;
+    }
+}
+
+bool BoxInViewFrustum(const Options& options, const Imath::M44f& cameraFromObject,
+                      const float bound6[6], float* detail) {
+    V3f c[8];
+    Corners(cameraFromObject, bound6, c);
+    float w[4];
+    EffectiveScreenWindow(options, w);
+    const bool perspective = options.projection == "perspective";
+    // Screen coordinates are x / (z tan(fov/2)) under perspective, x itself otherwise; the
+    // frustum's sides are the screen window's edges, scaled by depth under perspective.
+    const float t = perspective ? std::tan(options.fov * kPiF / 360.f) : 1;
+    const auto scale = [&](const V3f& p) { return perspective ? t * p.z : 1.f; };
+    if (AllOutside(c, [&](const V3f& p) { return p.z - options.nearClip; }) ||
+        AllOutside(c, [&](const V3f& p) { return options.farClip - p.z; }) ||
+        AllOutside(c, [&](const V3f& p) { return p.x - w[0] * scale(p); }) ||
+        AllOutside(c, [&](const V3f& p) { return w[1] * scale(p) - p.x; }) ||
+        AllOutside(c, [&](const V3f& p) { return p.y - w[2] * scale(p); }) ||
+        AllOutside(c, [&](const V3f& p) { return w[3] * scale(p) - p.y; }))
+        return false;
+    *detail = std::numeric_limits<float>::infinity();
+    float lo[2] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+    float hi[2] = {-lo[0], -lo[1]};
+    for (const V3f& p : c) {
+        if (perspective && p.z <= 0) return true;
+        const float s[2] = {p.x / scale(p), p.y / scale(p)};
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
+    }
+    // Screen to raster: the window spans the resolution.
+    *detail = (hi[0] - lo[0]) / (w[1] - w[0]) * options.xres * (hi[1] - lo[1]) / (w[3] - w[2]) *
+              options.yres;
+    return true;
+}
+
+}  // namespace gonio
