@@ -11,8 +11,10 @@
   that cast ray-traced shadows, 1280x720, 4 4.
 
 The scenes are generated rather than committed because the 10k-sphere files are 600 KB each.
-Pixie asks for ray-traced shadows differently (its lights take "shadowname" "raytrace" and
-objects need Attribute "visibility" "transmission"), hence --renderer.
+Pixie asks for ray-traced shadows differently (shadowdistant takes "shadowname" "raytrace",
+shadowpoint traces without one, and objects need Attribute "visibility" "integer
+transmission" [1]: Pixie's transmission is a number, and it drops the word "opaque", so nothing
+cast shadows in its render), hence --renderer.
 """
 
 import argparse
@@ -82,8 +84,8 @@ def shadows(renderer):
     if renderer == "pixie":
         lights = """  LightSource "ambientlight" 1 "intensity" 0.1
   LightSource "shadowdistant" 2 "from" [-1 1 -1] "to" [0 0 0] "intensity" 0.8 "shadowname" "raytrace"
-  LightSource "shadowpoint" 3 "from" [4 4 -6] "intensity" 60 "shadowname" "raytrace"
-  Attribute "visibility" "transmission" "opaque"
+  LightSource "shadowpoint" 3 "from" [4 4 -6] "intensity" 60
+  Attribute "visibility" "integer transmission" [1]
 """
     else:
         lights = ("  Attribute \"light\" \"shadows\" \"on\"\n" + LIGHTS)
