@@ -2,13 +2,35 @@
 // D.1) as a local web page. Exit status: 0 after Ctrl-C or SIGTERM, 1 a bad image (the message
 // names the file), 2 a bad command line or an address that cannot be bound.
 
+#include <dlfcn.h>
+
 #include <cstdio>
 #include <memory>
 
+#include "base/plugin_path.h"
 #include "commands.h"
-#include "viewer/viewer_server.h"
+#include "viewer/viewer_plugin.h"
 
 namespace gonio {
+namespace {
+
+// Opens libgonio_viewer.so and runs the viewer; 2 when the plugin cannot be opened.
+int RunViewerPlugin(const viewer::ServerOptions& options) {
+    const std::string path = PluginPath("GONIO_VIEWER_PLUGIN", "libgonio_viewer.so");
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    auto entry =
+        handle
+            ? reinterpret_cast<viewer::ViewerPluginEntry>(dlsym(handle, viewer::kViewerPluginEntry))
+            : nullptr;
+    if (!entry) {
+        std::fprintf(stderr, "gonio view: cannot open the viewer plugin: %s\n",
+                     handle ? (path + ": no " + viewer::kViewerPluginEntry).c_str() : dlerror());
+        return 2;
+    }
+    return entry(options, stdout);
+}
+
+}  // namespace
 
 void AddViewCommand(CLI::App& app, int* exitCode) {
     auto options = std::make_shared<viewer::ServerOptions>();
@@ -24,7 +46,7 @@ void AddViewCommand(CLI::App& app, int* exitCode) {
         ->check(CLI::Range(0, 65535));
     cmd->add_option("--bind", options->bind,
                     "Address to listen on (default 127.0.0.1, loopback only)");
-    cmd->callback([options, exitCode] { *exitCode = viewer::RunViewer(*options, stdout); });
+    cmd->callback([options, exitCode] { *exitCode = RunViewerPlugin(*options); });
 }
 
 }  // namespace gonio

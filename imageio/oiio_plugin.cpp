@@ -3,25 +3,14 @@
 
 #include <dlfcn.h>
 
-#include <cstdlib>
-#include <filesystem>
 #include <mutex>
 #include <stdexcept>
+
+#include "base/plugin_path.h"
 
 namespace gonio {
 
 namespace {
-
-// $GONIO_OIIO_PLUGIN, else libgonio_oiio.so in the folder of the running executable, so that
-// build/bin/gonio finds build/bin/libgonio_oiio.so wherever it is called from.
-std::string PluginPath() {
-    if (const char* path = std::getenv("GONIO_OIIO_PLUGIN"); path && *path) return path;
-    std::error_code error;
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
-    return (error ? std::filesystem::path("libgonio_oiio.so")
-                  : exe.parent_path() / "libgonio_oiio.so")
-        .string();
-}
 
 struct Loaded {
     OiioPlugin* plugin = nullptr;
@@ -29,7 +18,7 @@ struct Loaded {
 };
 
 Loaded Open() {
-    const std::string path = PluginPath();
+    const std::string path = PluginPath("GONIO_OIIO_PLUGIN", "libgonio_oiio.so");
     // RTLD_LOCAL: the plugin's OpenImageIO symbols stay out of the executable's namespace.
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) return {nullptr, dlerror()};

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Checks that gonio loads OpenImageIO only when a scene needs it (issue 21): the executable
+"""Checks that gonio loads OpenImageIO only when a scene needs it, and the viewer's HTTP server
+(cpp-httplib, OpenSSL) only for `gonio view` (issue 21): the executable
 does not link it; a render without textures writing TIFF, PNG and OpenEXR never loads it (the
 dynamic loader's own record, LD_DEBUG=files, of every object the process opened, dlopen
 included); a textured scene loads the plugin and renders the texture's colour; and without the
@@ -57,6 +58,19 @@ def check_executable_does_not_link_oiio(ws):
     expect("OpenImageIO" not in libraries, f"gonio links OpenImageIO:\n{libraries}")
 
 
+def check_only_view_loads_the_http_server(ws):
+    """cpp-httplib (and with it OpenSSL) is the viewer plugin's, opened by `gonio view` only: the
+    executable does not link it, and a render does not load it."""
+    libraries = subprocess.run(["ldd", ws.gonio], capture_output=True, text=True).stdout
+    expect("httplib" not in libraries and "libssl" not in libraries,
+           f"gonio links cpp-httplib or OpenSSL:\n{libraries}")
+    proc, loaded = render_traced(ws, SCENE.format(displays=BUILT_IN, surface="flat"), "plain")
+    expect(proc.returncode == 0, f"the render failed:\n{proc.stderr[-2000:]}")
+    http = [name for name in loaded if "httplib" in name or "libssl" in name or "gonio_viewer"
+            in name]
+    expect(not http, f"a render loaded {http}")
+
+
 def check_render_without_textures_loads_no_oiio(ws):
     proc, loaded = render_traced(ws, SCENE.format(displays=BUILT_IN, surface="flat"), "flat")
     expect(proc.returncode == 0, f"the render failed:\n{proc.stderr[-2000:]}")
@@ -99,7 +113,8 @@ def check_missing_plugin_is_a_clear_error(ws):
            f"a texture without the plugin: warnings {warnings}")
 
 
-CHECKS = [check_executable_does_not_link_oiio, check_render_without_textures_loads_no_oiio,
+CHECKS = [check_executable_does_not_link_oiio, check_only_view_loads_the_http_server,
+          check_render_without_textures_loads_no_oiio,
           check_texture_loads_the_plugin, check_missing_plugin_is_a_clear_error]
 
 
