@@ -86,16 +86,4 @@ float ShadowMap::Occlusion(const Imath::V3f& P, float footprint, const ShadowFil
     return float(shadowed) / float(g * g);
 }
 
-std::shared_ptr<const ShadowMap> ShadowMapCache::Get(const std::string& path, std::string* error) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    auto found = maps_.find(path);
-    if (found == maps_.end()) {
-        Entry entry;
-        entry.map = ShadowMap::Read(path, &entry.error);
-        found = maps_.emplace(path, std::move(entry)).first;
-    }
-    *error = found->second.error;
-    return found->second.map;
-}
-
 }  // namespace gonio

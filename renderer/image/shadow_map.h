@@ -9,11 +9,11 @@
 #include <Imath/ImathVec.h>
 
 #include <cstdint>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
+
+#include "base/file_cache.h"
 
 namespace gonio {
 
@@ -67,20 +67,16 @@ class ShadowMap {
     Imath::M44f cameraFromWorld_, screenFromCamera_;
 };
 
-// The shadow maps of one render, each read once for all threads; a map that cannot be read is
-// remembered with its reason. Thread-safe.
+// The shadow maps of one render, each read once for all threads (base/file_cache.h).
 class ShadowMapCache {
   public:
     // The map in `path`, or null with the reason in `error`.
-    std::shared_ptr<const ShadowMap> Get(const std::string& path, std::string* error);
+    std::shared_ptr<const ShadowMap> Get(const std::string& path, std::string* error) {
+        return maps_.Get(path, error, ShadowMap::Read);
+    }
 
   private:
-    struct Entry {
-        std::shared_ptr<const ShadowMap> map;
-        std::string error;
-    };
-    std::mutex mutex_;
-    std::map<std::string, Entry> maps_;
+    FileCache<ShadowMap> maps_;
 };
 
 }  // namespace gonio

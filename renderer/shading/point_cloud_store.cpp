@@ -59,23 +59,22 @@ bool PointCloudStore::WriteBaked(Diagnostics& diagnostics) {
 }
 
 const PointCloud* PointCloudStore::Load(const std::string& file, std::string* why) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto [it, first] = loaded_.try_emplace(file);
-    Loaded& loaded = it->second;
-    if (first) {
-        std::ifstream in(file, std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        auto cloud = std::make_unique<PointCloud>();
-        if (!in) {
-            loaded.why = "cannot be read";
-        } else if (cloud->Parse(bytes.str(), &loaded.why)) {
-            cloud->BuildIndex();
-            loaded.cloud = std::move(cloud);
-        }
-    }
-    *why = loaded.why;
-    return loaded.cloud.get();
+    return loaded_
+        .Get(file, why,
+             [](const std::string& path, std::string* error) -> std::shared_ptr<PointCloud> {
+                 std::ifstream in(path, std::ios::binary);
+                 std::ostringstream bytes;
+                 bytes << in.rdbuf();
+                 auto cloud = std::make_shared<PointCloud>();
+                 if (!in) {
+                     *error = "cannot be read";
+                 } else if (cloud->Parse(bytes.str(), error)) {
+                     cloud->BuildIndex();
+                     return cloud;
+                 }
+                 return nullptr;
+             })
+        .get();
 }
 
 }  // namespace gonio

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <string>
 
+#include "base/file_cache.h"
 #include "renderer/shading/point_cloud.h"
 
 namespace gonio {
@@ -28,13 +29,9 @@ class PointCloudStore {
     const PointCloud* Load(const std::string& file, std::string* why);
 
   private:
-    struct Loaded {
-        std::unique_ptr<PointCloud> cloud;
-        std::string why;  // when cloud is null
-    };
-    std::mutex mutex_;
+    std::mutex mutex_;  // guards baked_
     std::map<std::string, PointCloud> baked_;
-    std::map<std::string, Loaded> loaded_;
+    FileCache<PointCloud> loaded_;
 };
 
 }  // namespace gonio
