@@ -1,6 +1,6 @@
 #pragma once
-// Where gonio looks for a plugin it opens with dlopen: the path in the environment variable
-// `override` when it is set, else `file` in the folder of the running executable, so that
+// The plugins gonio opens with dlopen (OpenImageIO's, the viewer's): looked for as the path in
+// an environment variable when it is set, else beside the running executable, so that
 // build/bin/gonio finds build/bin/libgonio_*.so wherever it is called from.
 
 #include <string>
@@ -8,5 +8,11 @@
 namespace gonio {
 
 std::string PluginPath(const char* override, const char* file);
+
+// Opens the plugin (PluginPath(override, file)) and returns its symbol `entry`, or null with
+// the reason in *error. RTLD_LOCAL: the plugin's libraries stay out of the executable's
+// namespace.
+void* OpenPluginEntry(const char* override, const char* file, const char* entry,
+                      std::string* error);
 
 }  // namespace gonio

@@ -2,10 +2,9 @@
 // D.1) as a local web page. Exit status: 0 after Ctrl-C or SIGTERM, 1 a bad image (the message
 // names the file), 2 a bad command line or an address that cannot be bound.
 
-#include <dlfcn.h>
-
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "base/plugin_path.h"
 #include "commands.h"
@@ -16,15 +15,11 @@ namespace {
 
 // Opens libgonio_viewer.so and runs the viewer; 2 when the plugin cannot be opened.
 int RunViewerPlugin(const viewer::ServerOptions& options) {
-    const std::string path = PluginPath("GONIO_VIEWER_PLUGIN", "libgonio_viewer.so");
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    auto entry =
-        handle
-            ? reinterpret_cast<viewer::ViewerPluginEntry>(dlsym(handle, viewer::kViewerPluginEntry))
-            : nullptr;
+    std::string error;
+    auto entry = reinterpret_cast<viewer::ViewerPluginEntry>(OpenPluginEntry(
+        "GONIO_VIEWER_PLUGIN", "libgonio_viewer.so", viewer::kViewerPluginEntry, &error));
     if (!entry) {
-        std::fprintf(stderr, "gonio view: cannot open the viewer plugin: %s\n",
-                     handle ? (path + ": no " + viewer::kViewerPluginEntry).c_str() : dlerror());
+        std::fprintf(stderr, "gonio view: cannot open the viewer plugin: %s\n", error.c_str());
         return 2;
     }
     return entry(options, stdout);

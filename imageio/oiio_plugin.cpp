@@ -1,8 +1,6 @@
 // Opens the OpenImageIO plugin with dlopen (oiio_plugin.h says why it is a plugin).
 #include "imageio/oiio_plugin.h"
 
-#include <dlfcn.h>
-
 #include <mutex>
 #include <stdexcept>
 
@@ -18,12 +16,10 @@ struct Loaded {
 };
 
 Loaded Open() {
-    const std::string path = PluginPath("GONIO_OIIO_PLUGIN", "libgonio_oiio.so");
-    // RTLD_LOCAL: the plugin's OpenImageIO symbols stay out of the executable's namespace.
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) return {nullptr, dlerror()};
-    auto entry = reinterpret_cast<OiioPluginEntry>(dlsym(handle, kOiioPluginEntry));
-    if (!entry) return {nullptr, path + ": no " + kOiioPluginEntry + " in it"};
+    std::string error;
+    auto entry = reinterpret_cast<OiioPluginEntry>(
+        OpenPluginEntry("GONIO_OIIO_PLUGIN", "libgonio_oiio.so", kOiioPluginEntry, &error));
+    if (!entry) return {nullptr, error};
     return {entry(), ""};
 }
 
