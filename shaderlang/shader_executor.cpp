@@ -78,7 +78,10 @@ const float* GlobalSource(int id, const ShaderGlobals& g) {
 
 void LoadGlobals(ExecState& x, const ShaderGlobals& g) {
     const Program& p = *x.program;
-    std::vector<float> ones(64, 1.0f), zeros(64, 0.0f);
+    // Defaults for a global the caller did not give, one value per component: a colour has
+    // ncomps of them (81 for a sampled spectrum), a matrix 16.
+    const size_t width = std::max<size_t>(16, size_t(x.colorComponents));
+    std::vector<float> ones(width, 1.0f), zeros(width, 0.0f);
     for (int id = 0; id < kGlobalCount; ++id) {
         const int r = p.globals[id];
         if (r < 0 || !p.regs[r].used) continue;
