@@ -15,6 +15,6 @@ constexpr float kMaxPixelSamples = 1024;
 // far beyond any image an 8-bit-per-channel format or this machine's memory can hold.
 constexpr int kMaxResolution = 1 << 24;
 // PixelFilter widths, in pixels: the film renders a margin of half the width around the image.
-constexpr float kMaxFilterWidth = 256;
+constexpr float kMaxFilterWidth = 256;  // and MakeTexture's, in pixels of each MIP level
 
 }  // namespace gonio

@@ -62,8 +62,15 @@ struct TextureMakeOptions {
     // an environment map's wrap follows from its layout instead (periodic in s, clamped in t).
     TextureWrapModes wrap;
     // OpenImageIO's name of the filter that makes the MIP levels ("box", "gaussian",
-    // "catmull-rom", ...) at its own width for that filter; "" its default.
+    // "catmull-rom", ...); "" its default.
     std::string filter;
+    // With a filter: its widths in s and t, in pixels of the level being made (RISpec's swidth
+    // and twidth, as PixelFilter's are in pixels of the image made), and the files, named and
+    // removed by the caller, that levels 1, 2, ... are written to (float TIFF), each filtered
+    // from the one before; make_texture then takes them as its levels ("maketx:mipimages").
+    // Without scratch files make_texture filters at its own width for the filter.
+    float swidth = 1, twidth = 1;
+    std::vector<std::string> levelFiles;
     // OpenImageIO's name of the file's format ("tiff", "openexr"): the file is written under a
     // temporary name that says nothing.
     std::string format = "tiff";

@@ -1,7 +1,11 @@
 #include "imageio/texture_making.h"
 
+#include <algorithm>
+#include <cstdio>
+#include <memory>
 #include <stdexcept>
 
+#include "base/interrupt_cleanup.h"
 #include "imageio/environment_layout.h"
 #include "imageio/image_formats.h"
 #include "imageio/oiio_plugin.h"
@@ -52,6 +56,37 @@ ImageFileContents SourcePicture(OiioPlugin& plugin, const TextureFileRequest& re
     return error->empty() ? LatLongFromCubeFaces(faces, request.fov) : ImageFileContents{};
 }
 
+// The number of MIP levels below a picture of width × height: each halves its sides (a side
+// of 1 stays 1) until both are 1, as make_texture halves them.
+int LevelsBelow(int width, int height) {
+    int levels = 0;
+    for (; width > 1 || height > 1; ++levels)
+        width = std::max(1, width / 2), height = std::max(1, height / 2);
+    return levels;
+}
+
+// Names for the filtered MIP levels beside the texture's temporary file, each removed when this
+// object goes (and on Ctrl-C, base/interrupt_cleanup.h) so that none is left behind.
+class LevelFiles {
+  public:
+    LevelFiles(const std::string& temporary, int levels) {
+        for (int level = 1; level <= levels; ++level) {
+            names_.push_back(temporary + ".level" + std::to_string(level) + ".tif");
+            pending_.push_back(std::make_unique<PendingTemporary>(names_.back()));
+        }
+    }
+    ~LevelFiles() {
+        for (const std::string& name : names_) std::remove(name.c_str());
+    }
+    LevelFiles(const LevelFiles&) = delete;
+    LevelFiles& operator=(const LevelFiles&) = delete;
+    const std::vector<std::string>& Names() const { return names_; }
+
+  private:
+    std::vector<std::string> names_;
+    std::vector<std::unique_ptr<PendingTemporary>> pending_;
+};
+
 }  // namespace
 
 std::string MakeTextureFile(const TextureFileRequest& request, const std::string& path) {
@@ -72,8 +107,13 @@ std::string MakeTextureFile(const TextureFileRequest& request, const std::string
                        ? TextureWrapModes{TextureWrap::Periodic, TextureWrap::Clamp}
                        : request.wrap;
     options.filter = request.filter;
+    options.swidth = request.swidth, options.twidth = request.twidth;
     options.format = FormatForFileName(path) == "openexr" ? "openexr" : "tiff";
+    const int levels =
+        request.filter.empty() ? 0 : LevelsBelow(picture.spec.width, picture.spec.height);
     return WriteThroughTemporary(path, [&](const std::string& temporary) {
+        const LevelFiles levelFiles(temporary, levels);
+        options.levelFiles = levelFiles.Names();
         return plugin->MakeTexture(picture, temporary, options);
     });
 }

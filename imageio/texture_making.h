@@ -19,7 +19,9 @@ struct TextureFileRequest {
     std::vector<std::string> pictures;
     TextureWrapModes wrap;  // a plain texture's; environments wrap as their layout says
     std::string filter;     // OpenImageIO's filter name for the MIP levels; "" its default
-    float fov = 90;         // the cube faces' full field of view, in degrees
+    // The filter's widths, in pixels of the level being made; used with a filter only.
+    float swidth = 1, twidth = 1;
+    float fov = 90;  // the cube faces' full field of view, in degrees
 };
 
 // Makes the texture file `path`: a TIFF, or an OpenEXR file when the name says so (".exr").

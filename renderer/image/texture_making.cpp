@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "base/limits.h"
 #include "base/search_path.h"
 #include "imageio/texture_making.h"
 
@@ -39,17 +40,25 @@ std::string Listed(const std::vector<std::string>& folders) {
     return text;
 }
 
-// The notes for what OpenImageIO's make_texture cannot honour: the filter's widths and the
-// parameter list (PRMan's "float bias" and the like).
-void NoteUnusedArguments(const TextureRequest& request, Diagnostics& diagnostics) {
-    const std::string what = request.request;
-    diagnostics.NoteOnce(what + " widths", request.loc,
-                         what + ": the filter widths are OpenImageIO's own for each filter (" +
-                             std::to_string(request.swidth) + " " + std::to_string(request.twidth) +
-                             " given)");
+// The notes for the parameter list (PRMan's "float bias" and the like), which no RISpec
+// request defines.
+void NoteUnusedParameters(const TextureRequest& request, Diagnostics& diagnostics) {
     for (const Param& param : request.params)
-        diagnostics.NoteOnce(what + " " + param.token, param.loc,
-                             what + ": parameter \"" + param.token + "\" is ignored");
+        diagnostics.NoteOnce(
+            std::string(request.request) + " " + param.token, param.loc,
+            std::string(request.request) + ": parameter \"" + param.token + "\" is ignored");
+}
+
+// RISpec's filter widths are pixels of the level made; past PixelFilter's limit (256) the
+// filtering would take quadratically long for nothing.
+bool CheckFilterWidths(const TextureRequest& request, Diagnostics& diagnostics) {
+    const auto ok = [](float width) { return width > 0 && width <= kMaxFilterWidth; };
+    if (ok(request.swidth) && ok(request.twidth)) return true;
+    diagnostics.Error(request.loc,
+                      std::string(request.request) + ": the filter widths must be in (0, " +
+                          FormatNumber(kMaxFilterWidth) + "] pixels, got " +
+                          FormatNumber(request.swidth) + " " + FormatNumber(request.twidth));
+    return false;
 }
 
 }  // namespace
@@ -67,7 +76,9 @@ bool MakeRequestedTexture(const TextureRequest& request, Diagnostics& diagnostic
                                 what + ": unknown filter \"" + request.filter +
                                     "\": the MIP levels are made with OpenImageIO's default");
     }
-    NoteUnusedArguments(request, diagnostics);
+    NoteUnusedParameters(request, diagnostics);
+    if (!CheckFilterWidths(request, diagnostics)) return false;
+    file.swidth = request.swidth, file.twidth = request.twidth;
     for (const std::string& picture : request.pictures) {
         const std::string found = FindOnSearchPath(picture, request.searchPath);
         if (found.empty()) {

@@ -9,9 +9,9 @@
 namespace gonio {
 
 // Finds the request's pictures on its texture search path and makes its file, with RISpec's
-// filter name mapped to OpenImageIO's. A picture that cannot be found or read is an error at
-// the request's location, and no file is made; an unknown filter, the filter widths and any
-// parameter are noted (OpenImageIO filters MIP levels at its own width for each filter).
+// filter name mapped to OpenImageIO's and the MIP levels filtered at the request's widths. A
+// picture that cannot be found or read, or a width outside (0, 256], is an error at the
+// request's location, and no file is made; an unknown filter and any parameter are noted.
 // Returns whether the file was made.
 bool MakeRequestedTexture(const TextureRequest& request, Diagnostics& diagnostics);
 

@@ -244,6 +244,11 @@ CASES = [
                '"cube.env" 90 "box" 1 1\n', "p.pfm": PFM_PIXEL}, None,
      1, 's.rib:1:1: error: MakeCubeFaceEnvironment: cannot find the picture "nz.pfm"',
      ["cube.env"]),
+    ("make_texture_huge_filter_width", ["render", "s.rib"],
+     {"s.rib": 'MakeTexture "p.pfm" "out.tx" "periodic" "clamp" "gaussian" 1e9 2\n',
+      "p.pfm": PFM_PIXEL}, None,
+     1, "s.rib:1:1: error: MakeTexture: the filter widths must be in (0, 256] pixels, got 1e+09 2",
+     ["out.tx"]),
     ("make_texture_only", ["render", "s.rib"],
      {"s.rib": make_texture("p.pfm"), "p.pfm": PFM_PIXEL}, None, 0, "", []),
     # brdf() with a file it cannot use fails the render; no picture shaded black is written.

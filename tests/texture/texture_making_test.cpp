@@ -9,11 +9,14 @@
 // their mean.
 
 #include <gtest/gtest.h>
+#include <tiffio.h>
 
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "imageio/environment_layout.h"
@@ -270,34 +273,129 @@ TEST(MakeCubeFaceEnvironment, FaceOrientationFollowsRISpec) {
     EXPECT_NEAR(wide.x, 0.5f + 0.5f / std::tan(47.5f * 3.14159265f / 180), 1e-5f);
 }
 
+// ---- the MIP levels' filter ------------------------------------------------------------------
+
+// Level `level` (0 the picture's size) of a one-channel float texture file, read with libtiff
+// (make_texture writes each level as a TIFF directory of 64 x 64 tiles); empty on failure.
+struct Level {
+    int width = 0, height = 0;
+    std::vector<float> pixels;
+    float At(int x, int y) const { return pixels[size_t(y) * width + x]; }
+};
+Level ReadLevel(const std::string& path, int level) {
+    Level out;
+    std::unique_ptr<TIFF, void (*)(TIFF*)> tif(TIFFOpen(path.c_str(), "r"), TIFFClose);
+    uint32_t width = 0, height = 0, tileWidth = 0, tileHeight = 0;
+    if (!tif || !TIFFSetDirectory(tif.get(), uint16_t(level)) ||
+        !TIFFGetField(tif.get(), TIFFTAG_IMAGEWIDTH, &width) ||
+        !TIFFGetField(tif.get(), TIFFTAG_IMAGELENGTH, &height) ||
+        !TIFFGetField(tif.get(), TIFFTAG_TILEWIDTH, &tileWidth) ||
+        !TIFFGetField(tif.get(), TIFFTAG_TILELENGTH, &tileHeight) ||
+        TIFFTileSize(tif.get()) != tmsize_t(tileWidth * tileHeight * sizeof(float)))
+        return out;
+    out.width = int(width), out.height = int(height);
+    out.pixels.assign(size_t(width) * height, 0.f);
+    std::vector<float> tile(size_t(tileWidth) * tileHeight);
+    for (uint32_t y0 = 0; y0 < height; y0 += tileHeight)
+        for (uint32_t x0 = 0; x0 < width; x0 += tileWidth) {
+            if (TIFFReadTile(tif.get(), tile.data(), x0, y0, 0, 0) < 0) return {};
+            for (uint32_t y = y0; y < std::min(height, y0 + tileHeight); ++y)
+                for (uint32_t x = x0; x < std::min(width, x0 + tileWidth); ++x)
+                    out.pixels[size_t(y) * width + x] = tile[size_t(y - y0) * tileWidth + x - x0];
+        }
+    return out;
+}
+
+// The pixels of a level that are not 0, as (x, y) -> value.
+std::map<std::pair<int, int>, float> Lit(const Level& level) {
+    std::map<std::pair<int, int>, float> lit;
+    for (int y = 0; y < level.height; ++y)
+        for (int x = 0; x < level.width; ++x)
+            if (level.At(x, y) != 0) lit[{x, y}] = level.At(x, y);
+    return lit;
+}
+
+// A 64 x 64 black picture with one white pixel at (21, 37). Level 1 is 32 x 32; in its pixel
+// units the picture's pixel centres sit at (i + 1/2) / 2, the white one at (10.75, 18.75). A
+// box filter of width w gathers, for a level pixel centred at j + 1/2, the picture's pixels
+// whose centres lie within w / 2 of it, each with the same weight: 2w of them in a line for an
+// even w. So a box 3 x 1 lights the level pixels x = 9, 10, 11 of row 18 with 1/(6 · 2) each,
+// and a box 1 x 1 (the 2 x 2 mean) lights (10, 18) with 1/4, then (5, 9) of level 2 with 1/16.
+TEST(MakeTexture, MipLevelsAreFilteredAtTheRequestedWidths) {
+    Scratch scratch;
+    ImageFileSpec spec;
+    spec.width = spec.height = 64;
+    spec.channelNames = {"Y"};
+    spec.fileType = PixelType::Float;
+    std::vector<float> pixels(64 * 64, 0.f);
+    pixels[37 * 64 + 21] = 1;
+    ASSERT_EQ(WriteImageFile("tiff", scratch.File("dot.tif"), spec,
+                             PixelBuffer{PixelType::Float, pixels.data()}),
+              "");
+    const std::string wide = scratch.File("wide.tx"), narrow = scratch.File("narrow.tx");
+    const std::string rib = "MakeTexture \"" + scratch.File("dot.tif") + "\" \"" + wide +
+                            "\" \"clamp\" \"clamp\" \"box\" 3 1\n" + "MakeTexture \"" +
+                            scratch.File("dot.tif") + "\" \"" + narrow +
+                            "\" \"clamp\" \"clamp\" \"box\" 1 1\n";
+    const test::RibRenderResult r = test::RenderRibString(rib, "make.rib");
+    ASSERT_EQ(r.errors, 0) << r.messages;
+
+    const Level top = ReadLevel(wide, 0);
+    ASSERT_EQ(top.width, 64);
+    EXPECT_EQ(top.At(21, 37), 1.f) << "level 0 is the picture";
+    const Level wide1 = ReadLevel(wide, 1);
+    ASSERT_EQ(wide1.width, 32);
+    ASSERT_EQ(wide1.height, 32);
+    const auto wideLit = Lit(wide1);
+    ASSERT_EQ(wideLit.size(), 3u);
+    for (int x : {9, 10, 11}) EXPECT_NEAR(wideLit.at({x, 18}), 1.f / 12, 1e-6f) << "x = " << x;
+
+    const auto narrowLit = Lit(ReadLevel(narrow, 1));
+    ASSERT_EQ(narrowLit.size(), 1u);
+    EXPECT_NEAR(narrowLit.at({10, 18}), 1.f / 4, 1e-6f);
+    const Level narrow2 = ReadLevel(narrow, 2);
+    ASSERT_EQ(narrow2.width, 16);
+    const auto narrow2Lit = Lit(narrow2);
+    ASSERT_EQ(narrow2Lit.size(), 1u);
+    EXPECT_NEAR(narrow2Lit.at({5, 9}), 1.f / 16, 1e-6f);
+    // The levels' scratch files are gone.
+    EXPECT_EQ(scratch.Entries().size(), 4u) << "expected probe.sl, dot.tif and the two textures";
+}
+
 // ---- errors ---------------------------------------------------------------------------------
 
-TEST(MakeTexture, MissingOrUnreadablePictureIsALocatedErrorAndMakesNoFile) {
+TEST(MakeTexture, BadRequestsAreLocatedErrorsAndMakeNoFile) {
     Scratch scratch;
     std::ofstream(scratch.File("notapicture.tif")) << "this is text, not a TIFF\n";
-    const std::string rib = "MakeTexture \"missing.tif\" \"" + scratch.File("a.tx") +
-                            "\" \"periodic\" \"periodic\" \"box\" 1 1\n" + "MakeTexture \"" +
-                            scratch.File("notapicture.tif") + "\" \"" + scratch.File("b.tx") +
-                            "\" \"periodic\" \"periodic\" \"box\" 1 1\n" +
-                            "MakeTexture \"x.tif\" \"c.tx\" \"wrap\" \"periodic\" \"box\" 1 1\n";
+    WriteGrid(scratch.File("grid.tif"));
+    const auto request = [&](const std::string& picture, const std::string& texture,
+                             const std::string& rest) {
+        return "MakeTexture \"" + picture + "\" \"" + texture + "\" " + rest;
+    };
+    const std::string bad = scratch.File("notapicture.tif"), grid = scratch.File("grid.tif");
+    // Each request, on its own line, and the error it gives there.
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {request("missing.tif", scratch.File("a.tx"), "\"periodic\" \"periodic\" \"box\" 1 1"),
+         "MakeTexture: cannot find the picture \"missing.tif\""},
+        {request(bad, scratch.File("b.tx"), "\"periodic\" \"periodic\" \"box\" 1 1"),
+         "MakeTexture \"" + scratch.File("b.tx") + "\": cannot read the picture \"" + bad + "\""},
+        {request("x.tif", "c.tx", "\"wrap\" \"periodic\" \"box\" 1 1"),
+         "MakeTexture: swrap must be \"periodic\", \"clamp\" or \"black\", got \"wrap\""},
+        {request(grid, scratch.File("d.tx"), "\"clamp\" \"clamp\" \"box\" 0 1"),
+         "MakeTexture: the filter widths must be in (0, 256] pixels, got 0 1"},
+        {request(grid, scratch.File("e.tx"), "\"clamp\" \"clamp\" \"gaussian\" 2 1e9"),
+         "MakeTexture: the filter widths must be in (0, 256] pixels, got 2 1e+09"}};
+    std::string rib;
+    for (const auto& entry : cases) rib += entry.first + "\n";
     const test::RibRenderResult r = test::RenderRibString(rib, "make.rib");
-    EXPECT_EQ(r.errors, 3) << r.messages;
-    EXPECT_NE(r.messages.find("make.rib:1:1: error: MakeTexture: cannot find the picture "
-                              "\"missing.tif\""),
-              std::string::npos)
-        << r.messages;
-    EXPECT_NE(
-        r.messages.find("make.rib:2:1: error: MakeTexture \"" + scratch.File("b.tx") +
-                        "\": cannot read the picture \"" + scratch.File("notapicture.tif") + "\""),
-        std::string::npos)
-        << r.messages;
-    EXPECT_NE(r.messages.find("make.rib:3:1: error: MakeTexture: swrap must be \"periodic\", "
-                              "\"clamp\" or \"black\", got \"wrap\""),
-              std::string::npos)
-        << r.messages;
+    EXPECT_EQ(r.errors, int(cases.size())) << r.messages;
+    for (size_t i = 0; i < cases.size(); ++i)
+        EXPECT_NE(
+            r.messages.find("make.rib:" + std::to_string(i + 1) + ":1: error: " + cases[i].second),
+            std::string::npos)
+            << r.messages;
     // Nothing made, no temporary left behind.
-    const std::vector<std::string> entries = scratch.Entries();
-    EXPECT_EQ(entries.size(), 2u) << "expected only probe.sl and notapicture.tif";
+    EXPECT_EQ(scratch.Entries().size(), 3u) << "expected only probe.sl and the two pictures";
 }
 
 }  // namespace
