@@ -3,7 +3,10 @@
 # pixels × 16 paths, 270,400 with the pixel filter's margin: the camera rays --stats counts;
 # one path each): process CPU time (user + system) of `gonio render` on 1
 # and on 2 threads, best of 3, so that a shared machine's other jobs do not count; the empty
-# 1 × 1 render's CPU time (start-up) is taken off first.
+# 1 × 1 render's CPU time (start-up) is taken off first. With PIXIE=/path/to/Pixie (bin/rndr,
+# bin/sdrc) the same room is rendered by Pixie's raytrace hider at the same samples
+# (cornell_pixie.rib, cornell_gi.sl: one shadow ray and one indirect ray per shaded point, up to
+# 3 diffuse bounces) in the same run, and gonio's CPU time over Pixie's printed.
 #
 #   bench/render/run_cornell_pathtrace.sh      (GONIO=path/to/gonio to time another build)
 set -euo pipefail
@@ -32,8 +35,18 @@ source bench/render/timing.sh
 machine_line
 startup=$(cpu_best 3 "$gonio" render "$work/empty.rib")
 echo "start-up (empty 1x1 render): $startup s CPU"
+if [[ -n "${PIXIE:-}" ]]; then
+    cp bench/render/cornell_pixie.rib bench/render/cornell_gi.sl "$work/"
+    (cd "$work" && "$PIXIE/bin/sdrc" cornell_gi.sl > /dev/null)
+fi
 for threads in 1 2; do
     cpu=$(cpu_best 3 "$gonio" render "$scene" --threads "$threads")
-    echo "$threads thread(s): $cpu s CPU, $(awk -v p=$paths -v c="$cpu" -v s="$startup" \
+    line="$threads thread(s): $cpu s CPU, $(awk -v p=$paths -v c="$cpu" -v s="$startup" \
         'BEGIN { printf "%.0f", p / (c - s) }') paths per CPU-second"
+    if [[ -n "${PIXIE:-}" ]]; then
+        pixie=$(cpu_best 3 "$PIXIE/bin/rndr" "-t:$threads" cornell_pixie.rib)
+        line+="; Pixie raytrace hider $pixie s CPU, gonio / Pixie $(awk -v g="$cpu" -v p="$pixie" \
+            'BEGIN { printf "%.2f", g / p }')"
+    fi
+    echo "$line"
 done
