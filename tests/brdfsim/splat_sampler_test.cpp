@@ -70,6 +70,38 @@ TEST(SplatSampler, IsotropicChiSquare) {
     for (double theta : {8.0, 45.0, 82.0}) CheckSampler(splats, grid, theta, 1.1);
 }
 
+// An isotropic set's W(θ') comes from a table (splat_sampler.h): against the direct sum
+// Σ_a Σ_k w̄_k M(|θ'_a − θ'_k|) with M itself (KernelOutMarginal, the sampler's M is its table
+// interpolated to 1e-6), at θ' near the pole (image 1), mid-way and near the horizon (image 2),
+// for the smooth L2 kernel and the L1 one, whose M has a cusp at 0.
+TEST(SplatSampler, IsotropicWeightMatchesTheDirectSum) {
+    for (Norm norm : {Norm::kL2, Norm::kL1}) {
+        const double radius = 0.3;
+        auto splats = test::SyntheticSplats("phong:0.4,0.6,10", 20000, true, false, radius, norm);
+        const BrdfIsoGrid grid(splats, 5, 11);
+        const SplatSampler sampler(splats, grid);
+        for (double degrees : {3.0, 11.0, 45.0, 61.3, 79.0, 88.5}) {
+            const double theta = degrees * kDegree;
+            std::vector<double> images = {theta};
+            if (theta < radius) images.push_back(-theta);
+            if (theta > kPi / 2 - radius) images.push_back(kPi - theta);
+            double direct = 0.0;
+            for (std::size_t k = 0; k < splats->Size(); ++k) {
+                const double w = splats->weights[k];  // one component
+                for (double x : images) {
+                    const double offset = std::abs(x - splats->geometry[k].thetaIn);
+                    if (w > 0 && offset < radius)
+                        direct += w * KernelOutMarginal(radius, norm, offset);
+                }
+            }
+            SplatMixture mixture;
+            sampler.Prepare(DirectionFromAngles(theta, 0.4), &mixture);
+            EXPECT_NEAR(mixture.Total() / direct, 1.0, 2e-6)
+                << "θ' = " << degrees << "°, norm " << int(norm);
+        }
+    }
+}
+
 // A .grd written with a baked table and read back: the sampler draws from the file's splats and
 // evaluates its grid (the table is an interpolation, not the splat sum the pdf is exact for).
 TEST(SplatSampler, GridFileChiSquareAndWhiteFurnace) {
