@@ -255,6 +255,13 @@ class ShadingContext {
         uint64_t& state = randomState_[size_t(point)];
         return SplitMix64(state);
     }
+    // A uniform random() (one value for all points of a run): the next 64 bits of the run's
+    // own stream, seeded from all its points' seeds, so it too is the same whatever the thread
+    // count.
+    uint64_t NextUniformRandomBits() {
+        if (randomState_.size() < size_t(n_)) SeedRandom(nullptr);
+        return SplitMix64(uniformRandomState_);
+    }
 
     // Reports a run-time problem (division by zero, NaN, a missing texture) once per `key` and
     // shader statement; `message` without location: the context adds Statement().
@@ -304,11 +311,17 @@ class ShadingContext {
     // One seed per point (PointCount() of them), or nullptr: each point's index.
     void SeedRandom(const uint64_t* seeds) {
         randomState_.resize(size_t(n_));
-        for (int i = 0; i < n_; ++i) randomState_[i] = MixBits(seeds ? seeds[i] : uint64_t(i) + 1);
+        // The run's stream starts apart from every point's (whose state is MixBits(seed)).
+        uniformRandomState_ = kSplitMix64Step;
+        for (int i = 0; i < n_; ++i) {
+            randomState_[i] = MixBits(seeds ? seeds[i] : uint64_t(i) + 1);
+            uniformRandomState_ = MixBits(uniformRandomState_ ^ randomState_[i]);
+        }
     }
     int n_ = 0;
     int colorComponents_ = 3;
     std::vector<uint64_t> randomState_;
+    uint64_t uniformRandomState_ = 0;
 
   private:
     std::shared_ptr<RayBuiltinState> rayState_;

@@ -1,7 +1,7 @@
 #pragma once
 // The differential geometry and primitive variables at a hit, in the shape's object space, for
 // the shapes whose surface we know without the ray tracer (meshes, quadrics, curves, points).
-// Subdivision surfaces are evaluated by Embree in ray_scene.cpp.
+// Subdivision surfaces are evaluated by Embree in ray_scene_evaluation.cpp.
 
 #include "renderer/geometry/shape.h"
 #include "renderer/scene/frame.h"

@@ -13,7 +13,7 @@
 
 namespace gonio {
 
-struct GeometryRecord;  // ray_scene.cpp's record of an Embree geometry
+struct GeometryRecord;  // ray_scene_impl.h's record of an Embree geometry
 
 struct SurfacePoint {
     Imath::V3f P, N, Ng, dPdu, dPdv;  // world space; N and Ng unit length, facing "outside"

@@ -13,7 +13,7 @@ namespace {
 
 constexpr unsigned kRunTimeOnly = kVaryingResult | kReadsGlobals | kUsesLights | kHasSideEffects |
                                   kNeedsDerivatives | kReadsFiles | kTracesRays | kSamplesRays |
-                                  kUsesSpaces;
+                                  kUsesSpaces | kDrawsRandom;
 
 bool HasJumpTarget(Op op) {
     return op == Op::Jump || op == Op::If || op == Op::Else || op == Op::LoopTest ||

@@ -231,6 +231,7 @@ void TypeChecker::CheckDeclaration(Node* decl, Context& ctx, SymbolKind kind) {
     decl->symbol = s;
     decl->detail = s->detail;
     if (Node* init = decl->Initialiser()) {
+        if (s->detail == Detail::Uniform) UniformRandomIn(init);
         if (init->kind == NodeKind::InitList) {
             if (!decl->declType.IsArray()) {
                 Error(init, "a {...} initialiser needs an array");

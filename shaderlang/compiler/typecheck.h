@@ -66,6 +66,9 @@ class TypeChecker {
     // colours have another number.
     bool ColorTripleConversion(const TypeSpec& from, const TypeSpec& to, const Node* at);
     bool CheckLvalue(Node* target, Context& ctx, bool varyingValue);
+    // A value stored in a uniform variable: its random() calls draw one value per run
+    // (uniform_random.h), unless a user function is named random.
+    void UniformRandomIn(Node* value);
     bool NotBoolean(Node* e);
 
     SyntaxTree& tree_;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "shaderlang/compiler/typecheck.h"
+#include "shaderlang/compiler/uniform_random.h"
 #include "shaderlang/runtime/builtin_table.h"
 #include "shaderlang/runtime/global_vars.h"
 
@@ -345,10 +346,15 @@ bool TypeChecker::CheckLvalue(Node* target, Context& ctx, bool varyingValue) {
     return true;
 }
 
+void TypeChecker::UniformRandomIn(Node* value) {
+    if (symbols_.FindFunctions("random").empty()) MakeRandomUniform(value);
+}
+
 void TypeChecker::CheckAssign(Node* e, Context& ctx) {
     Node* target = e->Target();
     Node* value = e->Value();
     CheckExpr(target, ctx);
+    if (!target->hasError && !target->varying) UniformRandomIn(value);
     CheckExpr(value, ctx, &target->type);
     e->type = target->type;
     e->varying = target->varying;
@@ -576,6 +582,9 @@ bool TypeChecker::CheckBuiltinCall(Node* e, Context& ctx, const TypeSpec* expect
     e->type = BuiltinSignatureOf(best).result;
     if (info.flags & (kVaryingResult | kReadsGlobals | kUsesLights | kNeedsDerivatives)) {
         e->varying = true;
+        // A function that calls random() differs between points even without varying
+        // arguments, as one that reads a varying global does (CheckIdentifier).
+        if (ctx.function) ctx.function->varying = true;
     }
     for (size_t i = 0; i < params.size(); ++i) {
         if (params[i].output) {

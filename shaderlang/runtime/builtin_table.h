@@ -35,6 +35,9 @@ enum BuiltinFlags : unsigned {
     kUsesSpaces = 1u << 9,
     // texture3d: every ("name", variable) pair after the parameters writes its variable.
     kOutputPairs = 1u << 10,
+    // random, __uniform_random: the next value of a random stream, so never folded (a uniform
+    // random() has no varying result, yet differs from run to run).
+    kDrawsRandom = 1u << 11,
 };
 
 // Whether the value after the option `name` is an output variable in a call with `flags`:

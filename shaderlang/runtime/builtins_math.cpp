@@ -258,6 +258,9 @@ void SplineKernel(const BuiltinCall& call) {
 
 // ---- random --------------------------------------------------------------------------------
 
+// A float uniform in [0, 1) from the top 24 bits, which a float holds exactly.
+float UnitFloat(uint64_t bits) { return float(bits >> 40) * (1.0f / 16777216.0f); }
+
 // random(): uniform in [0, 1) per point and component, from the point's own stream in the
 // context (seeded from its pixel and sample), so that a render does not depend on which thread
 // shades which point. Without a context (kernel tests) each value hashes the point's index.
@@ -265,11 +268,21 @@ void RandomKernel(const BuiltinCall& call) {
     const int w = call.result.width;
     ForEachPoint(call, [&](int p) {
         for (int c = 0; c < w; ++c) {
-            const uint64_t bits =
-                call.context ? call.context->NextRandomBits(p) : MixBits(uint64_t(p) * w + c + 1);
-            call.result.At(c, p) = float(bits >> 40) * (1.0f / 16777216.0f);  // 24 bits
+            call.result.At(c, p) = UnitFloat(call.context ? call.context->NextRandomBits(p)
+                                                          : MixBits(uint64_t(p) * w + c + 1));
         }
     });
+}
+
+// __uniform_random(): random() stored in a uniform variable (compiler/uniform_random.h). One
+// value per component for the whole run, from the run's own stream; copied to every active
+// point if the result is varying (a uniform value in a varying register).
+void UniformRandomKernel(const BuiltinCall& call) {
+    for (int c = 0; c < call.result.width; ++c) {
+        const float value = UnitFloat(call.context ? call.context->NextUniformRandomBits()
+                                                   : MixBits(uint64_t(c) + 1));
+        ForEachPoint(call, [&](int p) { call.result.At(c, p) = value; });
+    }
 }
 
 void AddUnary(BuiltinList* list, const char* name, BuiltinKernel kernel) {
@@ -330,7 +343,10 @@ void AddMathBuiltins(BuiltinList* list) {
         list->Add("spline", t, std::string("sf") + t + "[]", SplineKernel);
     }
 
-    for (const char* t : {"f", "c", "p"}) list->Add("random", t, "", RandomKernel, kVaryingResult);
+    for (const char* t : {"f", "c", "p"}) {
+        list->Add("random", t, "", RandomKernel, kVaryingResult | kDrawsRandom);
+        list->Add("__uniform_random", t, "", UniformRandomKernel, kDrawsRandom);
+    }
 }
 
 }  // namespace gonio::sl::builtins

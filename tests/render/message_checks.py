@@ -2,7 +2,8 @@
 """Checks of message passing, textureinfo, random() and AOV displays through `gonio render`
 (issue 3): values that one shader passes to another reach the image exactly; an AOV of a
 constant output parameter equals it; the N AOV of a sphere is its analytic normal; random()
-gives the same image for --threads 1 and 2 and a different one for another --seed; an image too
+gives the same image for --threads 1 and 2 and a different one for another --seed, and so does
+random() stored in a uniform variable (one value per shader run); an image too
 large for the machine is a located error.
 
     message_checks.py --gonio build/bin/gonio"""
@@ -64,6 +65,11 @@ SHADERS = {
     printf("type=%s\\n", kind);
 }""",
     "msgrandom.sl": 'surface msgrandom() { Ci = color random(); Oi = 1; }',
+    "msguniformrandom.sl": """surface msguniformrandom() {
+    uniform color k = color(random(), random(), random());
+    Ci = k;
+    Oi = 1;
+}""",
     "primvarvalue.sl": 'surface primvarvalue(varying float myval = 0) { Ci = myval; Oi = 1; }',
 }
 
@@ -143,14 +149,21 @@ def check_textureinfo(ws):
                "missing file) + 0 (type == \"texture\")")
 
 
-def check_random_is_deterministic(ws):
-    rib = scene("", 'Surface "msgrandom"\nPolygon "P" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]')
-    ws.render(rib, name="random")
-    for args, out in ((["--threads", "1"], "t1.tif"), (["--threads", "2"], "t2.tif"),
-                      (["--threads", "2", "--seed", "7"], "s7.tif")):
-        ws.run(["render", ws.path("random.rib"), *args, "-o", out])
+def render_threads_and_seed(ws, surface, name):
+    """A square shaded by `surface` rendered with 1 thread, 2 threads, and 2 with --seed 7."""
+    rib = scene("", f'Surface "{surface}"\nPolygon "P" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]')
+    ws.render(rib, name=name)
+    outputs = []
+    for args, out in ((["--threads", "1"], "t1"), (["--threads", "2"], "t2"),
+                      (["--threads", "2", "--seed", "7"], "s7")):
+        outputs.append(ws.path(f"{name}_{out}.tif"))
+        ws.run(["render", ws.path(name + ".rib"), *args, "-o", outputs[-1]])
     # The pixels, not the bytes: the files carry the time they were written.
-    t1, t2, s7 = read_images(ws.path("t1.tif"), ws.path("t2.tif"), ws.path("s7.tif"))
+    return read_images(*outputs)
+
+
+def check_random_is_deterministic(ws):
+    t1, t2, s7 = render_threads_and_seed(ws, "msgrandom", "random")
     expect(t1.pixels == t2.pixels, "random(): --threads 1 and --threads 2 differ")
     changed = sum(1 for xy in t1.pixels if t1.pixels[xy] != s7.pixels[xy])
     expect(changed > 0.9 * len(t1.pixels), f"--seed 7 changed only {changed} pixels")
@@ -161,6 +174,16 @@ def check_random_is_deterministic(ws):
     expect(all(0 <= v < 1 for v in values), "random() outside [0, 1)")
     distinct = len(set(tuple(p[:3]) for p in t1.pixels.values()))
     expect(distinct > 0.9 * len(values), f"only {distinct} distinct pixels")
+
+
+def check_uniform_random_is_deterministic(ws):
+    """random() in a uniform colour draws one value per run of the shader from the run's own
+    stream, seeded from its points: the image does not depend on the thread count."""
+    u1, u2, u7 = render_threads_and_seed(ws, "msguniformrandom", "uniform")
+    expect(u1.pixels == u2.pixels, "uniform random(): --threads 1 and --threads 2 differ")
+    expect(u1.pixels != u7.pixels, "uniform random(): --seed 7 changed nothing")
+    values = [v for p in u1.pixels.values() for v in p[:3]]
+    expect(all(0 <= v < 1 for v in values), "uniform random() outside [0, 1)")
 
 
 def check_primvars_reach_every_primitive(ws):
@@ -191,7 +214,8 @@ def check_too_large_an_image_is_an_error(ws):
 
 
 CHECKS = [check_messages_and_aovs, check_lightsource, check_textureinfo,
-          check_random_is_deterministic, check_primvars_reach_every_primitive,
+          check_random_is_deterministic, check_uniform_random_is_deterministic,
+          check_primvars_reach_every_primitive,
           check_too_large_an_image_is_an_error]
 
 

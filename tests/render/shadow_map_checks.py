@@ -12,7 +12,10 @@
   traces no shadow rays; the map written directly by a "shadow" display does the same;
 * the default bias leaves a plane tilted 30° to the light unshadowed by itself (every pixel as
   without a map), where "bias" 0 shadows part of it (acne: the check can fail);
-* a shadow map that does not exist warns once and falls back to traced shadows (the same image).
+* a shadow map that does not exist warns once and falls back to traced shadows (the same image);
+* shadowpoint's six maps (one per axis direction, made from the light's position) shadow a
+  floor under four spheres as traced rays do, but along the edges, through four of the maps and
+  across the seam of two, and trace no shadow rays.
 
     shadow_map_checks.py --gonio build/bin/gonio"""
 
@@ -268,8 +271,157 @@ def missing_map_falls_back_to_traced_shadows(ws):
     expect(fallback.pixels == traced.pixels, "the fallback differs from the traced shadows")
 
 
+# shadowpoint: a point light 3 above a floor (y = 0) and four spheres whose shadows fall on the
+# floor where the light sees it through four of its six maps: straight down (ny), along +x (px)
+# and -z (nz), and one across the seam of the nx and ny faces. The maps' fov is a little over
+# 90°, so that a lookup's filter region near a face's edge stays inside its map. The shadows
+# are compared where the floor is within 60° of facing the light: the default bias is made for
+# up to 63° (docs/shading-language.md, Shadow maps), and beyond that the floor shadows itself.
+POINT_LIGHT = (0, 3, 0)
+SPHERES = [((0, 1.5, 0), 0.5), ((2, 1.6, 0.3), 0.5), ((-0.3, 1.6, -2), 0.5),
+           ((-1.5, 1.5, 0.2), 0.5)]
+FACES = {"px": (1, 0, 0), "nx": (-1, 0, 0), "py": (0, 1, 0), "ny": (0, -1, 0),
+         "pz": (0, 0, 1), "nz": (0, 0, -1)}
+# The camera rotation that turns each axis into the camera's +z (its view direction).
+FACE_ROTATIONS = {"px": "Rotate -90 0 1 0", "nx": "Rotate 90 0 1 0", "py": "Rotate 90 1 0 0",
+                  "ny": "Rotate -90 1 0 0", "pz": "", "nz": "Rotate 180 0 1 0"}
+CUBE_FOV, CUBE_SIZE = 95, 256
+FLOOR_GEOMETRY = 'Surface "matte"\n' + "".join(
+    f"AttributeBegin\nTranslate {x} {y} {z}\nSphere {r} {-r} {r} 360\nAttributeEnd\n"
+    for (x, y, z), r in SPHERES) + 'Polygon "P" [-12 0 -12  -12 0 12  12 0 12  12 0 -12]\n'
+CUBE_FRAME = """FrameBegin {n}
+Format {size} {size} 1
+PixelSamples 2 2
+Projection "perspective" "fov" [{fov}]
+{rotation}
+Translate {tx} {ty} {tz}
+Display "{face}.z" "zfile" "z"
+WorldBegin
+{geometry}WorldEnd
+FrameEnd
+MakeShadow "{face}.z" "{face}.sm"
+"""
+# The viewer looks straight down on the floor from 14 above the light's foot: pixel (px, py)
+# sees the floor point (x, 0, z), x growing along the image's width and z up its height.
+VIEW_HEIGHT, VIEW_SIZE, VIEW_FOV = 14, 128, 60
+POINT_VIEW_FRAME = """FrameBegin {n}
+Format {size} {size} 1
+PixelSamples 2 2
+PixelFilter "box" 1 1
+Projection "perspective" "fov" [{fov}]
+Rotate -90 1 0 0
+Translate 0 {ty} 0
+Display "{name}.exr" "openexr" "rgb"
+Display "+{name}_z.exr" "openexr" "z"
+Display "+{name}.z" "zfile" "z"
+WorldBegin
+{light}LightSource "shadowpoint" 1 "intensity" 36 "point from" [{lx} {ly} {lz}] {maps}
+{geometry}WorldEnd
+FrameEnd
+"""
+
+
+def cube_frames(first):
+    lx, ly, lz = POINT_LIGHT
+    return "".join(CUBE_FRAME.format(n=first + k, size=CUBE_SIZE, fov=CUBE_FOV, rotation=rotation,
+                                     tx=-lx, ty=-ly, tz=-lz, face=face, geometry=FLOOR_GEOMETRY)
+                   for k, (face, rotation) in enumerate(FACE_ROTATIONS.items()))
+
+
+def point_view(n, name, maps="", light=""):
+    lx, ly, lz = POINT_LIGHT
+    return POINT_VIEW_FRAME.format(n=n, size=VIEW_SIZE, fov=VIEW_FOV, ty=-VIEW_HEIGHT, name=name,
+                                   light=light, lx=lx, ly=ly, lz=lz, maps=maps,
+                                   geometry=FLOOR_GEOMETRY)
+
+
+def floor_point(px, py):
+    half = VIEW_HEIGHT * math.tan(math.radians(VIEW_FOV / 2))
+    return (half * (-1 + 2 * (px + 0.5) / VIEW_SIZE), 0, half * (1 - 2 * (py + 0.5) / VIEW_SIZE))
+
+
+def dominant_face(d):
+    axis = max(range(3), key=lambda k: abs(d[k]))
+    return ("p" if d[axis] > 0 else "n") + "xyz"[axis]
+
+
+def edge_margin(point):
+    """The angle, seen from the light, between `point` and the nearest edge of a sphere's
+    shadow (a sphere's silhouette cone), and whether the point lies inside some shadow."""
+    d = [p - l for p, l in zip(point, POINT_LIGHT)]
+    dist = math.sqrt(sum(v * v for v in d))
+    margin, inside = math.pi, False
+    for centre, r in SPHERES:
+        c = [p - l for p, l in zip(centre, POINT_LIGHT)]
+        cdist = math.sqrt(sum(v * v for v in c))
+        angle = math.acos(max(-1, min(1, sum(a * b for a, b in zip(c, d)) / (cdist * dist))))
+        margin = min(margin, abs(angle - math.asin(r / cdist)))
+        inside = inside or angle < math.asin(r / cdist)
+    return margin, inside, dist
+
+
+def six_maps_shadow_a_point_light_like_rays(ws):
+    maps = " ".join(f'"string sf{face}" "{face}.sm"' for face in FACES)
+    rib = (cube_frames(1) + point_view(7, "mapped", maps) + point_view(8, "traced", light=TRACED) +
+           point_view(9, "unshadowed"))
+    proc = ws.render(rib, "shadowpoint", args=["--stats"])
+    expect("warning" not in proc.stderr, f"the render warned:\n{proc.stderr}")
+    for face, axis in FACES.items():  # each map's camera looks along its axis from the light
+        camera = read_zfile(ws.path(face + ".z"))[3]
+        ahead = transform([l + a for l, a in zip(POINT_LIGHT, axis)], camera)
+        expect(max(abs(ahead[0]), abs(ahead[1]), abs(ahead[2] - 1)) < 1e-5,
+               f"map {face}: one unit along {axis} from the light is at camera {ahead}")
+    _, _, screen, camera, _ = read_zfile(ws.path("mapped.z"))
+    for px, py in ((0, 0), (100, 20)):  # floor_point is where the viewer's pixels look
+        sx, sy, _ = transform(floor_point(px, py), screen)
+        expect(abs(transform(floor_point(px, py), camera)[2] - VIEW_HEIGHT) < 1e-4 and
+               abs(sx - (-1 + 2 * (px + 0.5) / VIEW_SIZE)) < 1e-4 and
+               abs(sy - (1 - 2 * (py + 0.5) / VIEW_SIZE)) < 1e-4,
+               f"pixel ({px},{py}) does not see floor point {floor_point(px, py)}")
+    mapped, traced, unshadowed, depth = read_images(
+        *(ws.path(f + ".exr") for f in ("mapped", "traced", "unshadowed", "traced_z")))
+    # Angles seen from the light: a map texel is at most 2 tan(fov/2) / size wide (at its
+    # centre), a viewer pixel's footprint on the floor at most pixel / distance. The mapped edge
+    # may move by a texel, half the filter region and half a pixel's diagonal, as for the spot
+    # light above; a traced edge pixel is judged by its centre, up to half its diagonal away.
+    texel = 2 * math.tan(math.radians(CUBE_FOV / 2)) / CUBE_SIZE
+    pixel = 2 * VIEW_HEIGHT * math.tan(math.radians(VIEW_FOV / 2)) / VIEW_SIZE
+    floor = [p for p, (z,) in depth.pixels.items() if abs(z - VIEW_HEIGHT) < 1e-3]
+    shadowed_by_face, mismatched, far, compared = {}, [], [], 0
+    for p in floor:
+        lit = unshadowed.pixels[p][0]
+        expect(lit > 0, f"floor pixel {p} is unlit without shadows")
+        traced_fraction = 1 - traced.pixels[p][0] / lit
+        mapped_fraction = 1 - mapped.pixels[p][0] / lit
+        point = floor_point(*p)
+        margin, inside, dist = edge_margin(point)
+        footprint = pixel / dist
+        expect(abs(traced_fraction - (1 if inside else 0)) < 1e-4 or
+               margin < footprint * math.sqrt(0.5),
+               f"floor pixel {p}: traced shadow {traced_fraction:.3f}, the spheres say {inside}")
+        if POINT_LIGHT[1] / dist < math.cos(math.radians(60)):
+            continue
+        compared += 1
+        if traced_fraction > 0.999:
+            face = dominant_face([a - b for a, b in zip(point, POINT_LIGHT)])
+            shadowed_by_face[face] = shadowed_by_face.get(face, 0) + 1
+        if abs(mapped_fraction - traced_fraction) > 0.1:
+            mismatched.append(p)
+            if margin > texel + max(texel, footprint) / 2 + footprint * math.sqrt(0.5):
+                far.append(p)
+    expect(all(shadowed_by_face.get(face, 0) > 50 for face in ("px", "nx", "ny", "nz")),
+           f"shadowed floor pixels per map face: {shadowed_by_face}")
+    expect(len(mismatched) < 0.02 * compared,
+           f"{len(mismatched)} of {compared} floor pixels differ from the traced shadows")
+    expect(not far, f"pixels {far[:5]} differ from the traced shadows away from their edges")
+    rays = frame_shadow_rays(proc.stderr)
+    expect(len(rays) == 9 and rays[6] == 0 and rays[7] > 1000,
+           f"shadow rays per frame {rays}: the mapped frame should trace none")
+
+
 CHECKS = [zfile_holds_analytic_depths, two_pass_map_shadows_like_rays,
-          default_bias_leaves_a_lit_plane_unshadowed, missing_map_falls_back_to_traced_shadows]
+          default_bias_leaves_a_lit_plane_unshadowed, missing_map_falls_back_to_traced_shadows,
+          six_maps_shadow_a_point_light_like_rays]
 
 if __name__ == "__main__":
     sys.exit(workspace_main(__doc__.splitlines()[0], CHECKS, "gonio-shadowmaps-"))

@@ -283,5 +283,26 @@ TEST(MathBuiltins, RandomIsVaryingUniformInUnitInterval) {
     EXPECT_NE(call.R(0, 0), call.R(0, 1));
 }
 
+// random() stored in a uniform (compiler/uniform_random.h): one value per component for all
+// active points, even in a varying register.
+TEST(MathBuiltins, UniformRandomGivesEveryActivePointOneValue) {
+    const BuiltinInfo* row = FindRow("__uniform_random", "c", "");
+    ASSERT_NE(row, nullptr);
+    EXPECT_FALSE(row->flags & kVaryingResult);
+    EXPECT_TRUE(row->flags & kDrawsRandom);  // never folded to a constant
+    const int n = 16;
+    TestCall call(n);
+    std::vector<uint8_t> mask(n, 1);
+    mask[5] = 0;
+    call.Mask(mask).Result(TypeFromCode("c"), true);
+    call.Run(row->kernel);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(call.R(c, 0), 0.0f);
+        EXPECT_LT(call.R(c, 0), 1.0f);
+        for (int p = 1; p < n; ++p) EXPECT_EQ(call.R(c, p), p == 5 ? kSentinel : call.R(c, 0));
+    }
+    EXPECT_NE(call.R(0, 0), call.R(1, 0));
+}
+
 }  // namespace
 }  // namespace gonio::sl::testing

@@ -1,0 +1,228 @@
+// A RayScene hit evaluated into a SurfacePoint (every primitive variable, for shading) or a
+// LeanSurfacePoint (point, normals and colour, for the photon tracer).
+
+#include <string>
+#include <vector>
+
+#include "base/overloaded.h"
+#include "renderer/raytrace/motion.h"
+#include "renderer/raytrace/ray_scene_impl.h"
+#include "renderer/raytrace/transforms.h"
+
+namespace gonio {
+
+using Imath::M44f;
+using Imath::V3f;
+
+ObjectHit RayScene::Impl::EvaluateObject(const GeometryRecord& record, const RayHit& hit,
+                                         const V3f& worldP, const V3f& worldDir,
+                                         const M44f& spaceFromWorld) const {
+    // The hit point and normal in object space, for the kinds Embree gives them in world space.
+    auto objectP = [&] {
+        return TransformPoint(record.objectFromSpace, TransformPoint(spaceFromWorld, worldP));
+    };
+    auto objectNg = [&] { return TransformNormal(record.spaceFromObject, hit.Ng); };
+    return std::visit(
+        Overloaded{
+            [&](const TriangleMesh& mesh) { return EvaluateMesh(mesh, hit.primID, hit.u, hit.v); },
+            [&](const QuadricShape& quadric) {
+                const PrimVar* normals =
+                    record.quadricN >= 0 ? &record.vars->vars[record.quadricN] : nullptr;
+                return EvaluateQuadricAt(quadric, hit.objectP, normals);
+            },
+            [&](const CurveSet& curves) {
+                const V3f objectDir = TransformVector(record.objectFromSpace,
+                                                      TransformVector(spaceFromWorld, worldDir));
+                return EvaluateCurve(curves, hit.primID, hit.u, hit.v, objectP(), objectNg(),
+                                     objectDir);
+            },
+            [&](const PointSet&) { return EvaluatePoint(hit.primID, objectP(), objectNg()); },
+            [&](const SubdivisionCage&) { return EvaluateSubdivision(record, hit, objectP()); },
+        },
+        record.shape->geometry);
+}
+
+// A subdivision surface: the limit surface through Embree, already in the record's space.
+ObjectHit RayScene::Impl::EvaluateSubdivision(const GeometryRecord& record, const RayHit& hit,
+                                              const V3f& objectP) const {
+    float P[3], dPdu[3], dPdv[3];
+    rtcInterpolate1(record.geometry, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX, 0, P, dPdu,
+                    dPdv, 3);
+    ObjectHit out;
+    out.geometry.P = objectP;
+    out.geometry.dPdu = TransformVector(record.objectFromSpace, V3f(dPdu[0], dPdu[1], dPdu[2]));
+    out.geometry.dPdv = TransformVector(record.objectFromSpace, V3f(dPdv[0], dPdv[1], dPdv[2]));
+    out.geometry.Ng = Normalized(out.geometry.dPdu.cross(out.geometry.dPdv));
+    out.geometry.u = hit.u, out.geometry.v = hit.v;
+    out.N = out.geometry.Ng;
+    out.stencils.uniform = static_cast<int>(hit.primID);
+    return out;
+}
+
+namespace {
+
+// One variable of a record at a hit: through Embree for a subdivision surface's per-vertex
+// data, through the stencils for everything else.
+void InterpolateRecordVar(const GeometryRecord& record, int index, const SurfacePoint& sp,
+                          float* out) {
+    const PrimVar& var = record.vars->vars[index];
+    if (!record.attributeSlot.empty() && record.attributeSlot[index] >= 0) {
+        rtcInterpolate0(record.geometry, sp.primID, sp.hitU, sp.hitV,
+                        RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, record.attributeSlot[index], out,
+                        var.components);
+        return;
+    }
+    InterpolatePrimVar(var, sp.stencils, out);
+}
+
+}  // namespace
+
+bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& name,
+                                  std::vector<float>* out) const {
+    if (!sp.record) return false;
+    const std::vector<PrimVar>& vars = sp.record->vars->vars;
+    for (size_t i = 0; i < vars.size(); ++i) {
+        if (vars[i].decl.name != name || vars[i].decl.type == ParamType::String) continue;
+        out->assign(vars[i].components, 0.f);
+        InterpolateRecordVar(*sp.record, static_cast<int>(i), sp, out->data());
+        return true;
+    }
+    return false;
+}
+
+const GeometryRecord& RayScene::Impl::RecordOf(const RayHit& hit) const {
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID) return *top.records[hit.geomID];
+    if (hit.instID == kSolidLevel) return *solids.records[hit.geomID];
+    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
+    return *definitions[placement.level].records[hit.geomID];
+}
+
+RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
+    const GeometryRecord* record = &RecordOf(hit);
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID || hit.instID == kSolidLevel)
+        return {record, record->shape->attributes.get(), nullptr};
+    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
+    const Attributes* attributes = record->shape->attributes.get();
+    if (const ObjectInstanceUse* use = placement.use)
+        attributes = use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
+    return {record, attributes, &placement};
+}
+
+void RayScene::Impl::SpaceTransforms(const InstancePlacement* placement, float time,
+                                     M44f* worldFromSpace, M44f* spaceFromWorld) {
+    if (!placement) {
+        worldFromSpace->makeIdentity();
+        spaceFromWorld->makeIdentity();
+    } else if (placement->motion.empty()) {
+        *worldFromSpace = placement->worldFromDefinition;
+        *spaceFromWorld = placement->definitionFromWorld;
+    } else {
+        *worldFromSpace = TransformAt(placement->motionTimes, placement->motion, time);
+        *spaceFromWorld = worldFromSpace->inverse();
+    }
+}
+
+void RayScene::EvaluateLean(const V3f& org, const V3f& dir, const RayHit& hit,
+                            LeanSurfacePoint* out) const {
+    const Impl::ResolvedHit resolved = impl_->Resolve(hit);
+    const GeometryRecord& record = *resolved.record;
+    V3f objectN(0);  // a quadric's normal in its object space
+    if (record.plainQuadric)
+        objectN = std::get<QuadricShape>(record.shape->geometry).quadric->NormalAt(hit.objectP);
+    if (!record.flatMesh && objectN == V3f(0)) {
+        SurfacePoint& sp = out->scratch;
+        Evaluate(org, dir, hit, &sp);
+        out->P = sp.P, out->N = sp.N, out->Ng = sp.Ng;
+        out->Cs.assign(sp.Cs.begin(), sp.Cs.end());
+        out->shape = sp.shape;
+        out->attributes = sp.attributes;
+        return;
+    }
+    // Embree's Ng is in the space the mesh was built in, a quadric's normal in its object
+    // space; a normal goes to the world by the inverse transpose of worldFromSpace.
+    out->P = org + hit.t * dir;
+    const bool quadric = !record.flatMesh;
+    if (resolved.placement) {
+        M44f worldFromSpace, spaceFromWorld;
+        Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
+        out->Ng =
+            Normalized(quadric ? TransformNormal(spaceFromWorld * record.objectFromSpace, objectN)
+                               : TransformNormal(spaceFromWorld, hit.Ng));
+    } else {
+        out->Ng = Normalized(quadric ? TransformNormal(record.objectFromSpace, objectN) : hit.Ng);
+    }
+    out->N = out->Ng;
+    out->shape = record.shape;
+    out->attributes = resolved.attributes;
+    out->Cs.assign(resolved.attributes->color.begin(), resolved.attributes->color.end());
+}
+
+SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit) const {
+    SurfacePoint sp;
+    Evaluate(org, dir, hit, &sp);
+    return sp;
+}
+
+void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
+                        SurfacePoint* out) const {
+    const Impl& s = *impl_;
+    const Impl::ResolvedHit resolved = s.Resolve(hit);
+    const GeometryRecord* record = resolved.record;
+    M44f worldFromSpace, spaceFromWorld;
+    Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
+    const V3f worldP = org + hit.t * dir;
+    const ObjectHit object = s.EvaluateObject(*record, hit, worldP, dir, spaceFromWorld);
+
+    // At the top level the record's space is the world (SpaceTransforms gives identities).
+    M44f placedWorldFromObject, placedObjectFromWorld;
+    if (resolved.placement) {
+        placedWorldFromObject = record->spaceFromObject * worldFromSpace;
+        placedObjectFromWorld = spaceFromWorld * record->objectFromSpace;
+    }
+    const M44f& worldFromObject =
+        resolved.placement ? placedWorldFromObject : record->spaceFromObject;
+    const M44f& objectFromWorld =
+        resolved.placement ? placedObjectFromWorld : record->objectFromSpace;
+    SurfacePoint& sp = *out;
+    sp.shape = record->shape;
+    sp.P = worldP;
+    sp.dPdu = TransformVector(worldFromObject, object.geometry.dPdu);
+    sp.dPdv = TransformVector(worldFromObject, object.geometry.dPdv);
+    const float flip = record->shape->flipNormals != hit.flipNormal ? -1.f : 1.f;
+    sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
+    // N is Ng unless the primitive gives normals.
+    sp.N = object.N == object.geometry.Ng
+               ? sp.Ng
+               : flip * Normalized(TransformNormal(objectFromWorld, object.N));
+    sp.u = object.geometry.u, sp.v = object.geometry.v;
+
+    sp.worldFromObject = worldFromObject;
+    sp.record = record;
+    sp.primID = hit.primID;
+    sp.hitU = hit.u, sp.hitV = hit.v;
+    sp.stencils = object.stencils;
+
+    sp.attributes = resolved.attributes;
+    const Attributes& attributes = *sp.attributes;
+    sp.Cs = attributes.color;
+    sp.Os = attributes.opacity;
+    const std::vector<PrimVar>& vars = record->vars->vars;
+    auto fetch = [&](int index, int components, float* out) {
+        if (index >= 0 && vars[index].components == components)
+            InterpolateRecordVar(*record, index, sp, out);
+    };
+    fetch(record->cs, static_cast<int>(sp.Cs.size()), sp.Cs.data());
+    fetch(record->os, static_cast<int>(sp.Os.size()), sp.Os.data());
+    // s, t: from primitive variables, else the TextureCoordinates mapped over (u, v).
+    const std::vector<float>& tc = attributes.textureCoordinates;
+    const float u = sp.u, v = sp.v;
+    sp.s = (1 - u) * (1 - v) * tc[0] + u * (1 - v) * tc[2] + (1 - u) * v * tc[4] + u * v * tc[6];
+    sp.t = (1 - u) * (1 - v) * tc[1] + u * (1 - v) * tc[3] + (1 - u) * v * tc[5] + u * v * tc[7];
+    float st[2] = {sp.s, sp.t};
+    fetch(record->st, 2, st);
+    sp.s = st[0], sp.t = st[1];
+    fetch(record->s, 1, &sp.s);
+    fetch(record->t, 1, &sp.t);
+}
+
+}  // namespace gonio
