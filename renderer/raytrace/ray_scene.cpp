@@ -114,6 +114,49 @@ void QuadricOccluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// Whether org + t·dir meets `box` for some t in [t0, t1] (the slab test, Kay and Kajiya 1986).
+bool SegmentMeetsBox(const Box3f& box, const V3f& org, const V3f& dir, float t0, float t1) {
+    for (int a = 0; a < 3; ++a) {
+        if (dir[a] == 0) {
+            if (org[a] < box.min[a] || org[a] > box.max[a]) return false;
+            continue;
+        }
+        float near = (box.min[a] - org[a]) / dir[a], far = (box.max[a] - org[a]) / dir[a];
+        if (near > far) std::swap(near, far);
+        t0 = std::max(t0, near);
+        t1 = std::min(t1, far);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+// The bounds of the frame's DelayedReadArchives out of view (lazy_procedurals.h), one user
+// primitive each: a ray marks those it passes through and reports no hit, so that it goes on
+// and meets every one on its way.
+void LazyBounds(const RTCBoundsFunctionArguments* args) {
+    const auto* lazy = static_cast<const LazyProcedurals*>(args->geometryUserPtr);
+    const Box3f& box = lazy->All()[args->primID].worldBound;
+    RTCBounds* b = args->bounds_o;
+    b->lower_x = box.min.x, b->lower_y = box.min.y, b->lower_z = box.min.z;
+    b->upper_x = box.max.x, b->upper_y = box.max.y, b->upper_z = box.max.z;
+}
+
+void LazyReached(const RTCOccludedFunctionNArguments* args) {
+    const auto* lazy = static_cast<const LazyProcedurals*>(args->geometryUserPtr);
+    const Box3f& box = lazy->All()[args->primID].worldBound;
+    RTCRayN* rays = args->ray;
+    const unsigned N = args->N;
+    for (unsigned i = 0; i < N; ++i) {
+        if (!args->valid[i]) continue;
+        const V3f org(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i),
+                      RTCRayN_org_z(rays, N, i));
+        const V3f dir(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i),
+                      RTCRayN_dir_z(rays, N, i));
+        if (SegmentMeetsBox(box, org, dir, RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i)))
+            lazy->MarkReached(args->primID);
+    }
+}
+
 void ReportEmbreeError(void* userPtr, RTCError code, const char* message) {
     auto* diagnostics = static_cast<Diagnostics*>(userPtr);
     diagnostics->Error(FileLoc{}, "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
@@ -170,6 +213,8 @@ struct RayScene::Impl {
     std::unique_ptr<SolidTrees> trees;
     std::vector<SceneLevel> definitions;
     std::vector<InstancePlacement> instances;
+    // The bounds of the archives not read (Frame::lazyProcedurals); null scene: none.
+    RTCScene lazyScene = nullptr;
 
     RTCSceneFlags sceneFlags = RTC_SCENE_FLAG_ROBUST;  // of every Embree scene it makes
     explicit Impl(Diagnostics& d) : diagnostics(d) {}
@@ -177,10 +222,14 @@ struct RayScene::Impl {
         for (SceneLevel& level : definitions) rtcReleaseScene(level.scene);
         if (top.scene) rtcReleaseScene(top.scene);
         if (solids.scene) rtcReleaseScene(solids.scene);
+        if (lazyScene) rtcReleaseScene(lazyScene);
         if (device) rtcReleaseDevice(device);
     }
 
     void AddShape(SceneLevel& level, const SceneShape& shape, const M44f& spaceFromObject);
+    void WatchLazyProcedurals(const LazyProcedurals& lazy);
+    void MarkLazyProcedurals(const V3f& org, const V3f& dir, float tnear, float tfar,
+                             float time) const;
     void Place(int level, const M44f& worldFromDefinition, const ObjectInstanceUse* use,
                const std::vector<float>& motionTimes, const std::vector<M44f>& motion);
     // A scene of its own for shapes placed by Place: in their definition space, or, for one
@@ -585,6 +634,30 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics, Traversal trave
     }
     rtcCommitScene(s.top.scene);
     if (s.solids.scene) rtcCommitScene(s.solids.scene);
+    if (!frame.lazyProcedurals.All().empty()) s.WatchLazyProcedurals(frame.lazyProcedurals);
+}
+
+void RayScene::Impl::WatchLazyProcedurals(const LazyProcedurals& lazy) {
+    lazyScene = rtcNewScene(device);
+    // Robust traversal: a ray grazing a bound must mark it whatever the BVH's shape.
+    rtcSetSceneFlags(lazyScene, RTC_SCENE_FLAG_ROBUST);
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, unsigned(lazy.All().size()));
+    rtcSetGeometryUserData(g, const_cast<LazyProcedurals*>(&lazy));
+    rtcSetGeometryBoundsFunction(g, LazyBounds, nullptr);
+    rtcSetGeometryOccludedFunction(g, LazyReached);
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(lazyScene, g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(lazyScene);
+}
+
+void RayScene::Impl::MarkLazyProcedurals(const V3f& org, const V3f& dir, float tnear, float tfar,
+                                         float time) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray = MakeRay(org, dir, tnear, tfar, time);
+    rtcOccluded1(lazyScene, &context, &ray);
 }
 
 int RayScene::Impl::NewLevel(const std::vector<const SceneShape*>& shapes, bool inObjectSpace) {
@@ -689,16 +762,23 @@ bool RayScene::Impl::IntersectSolids(const V3f& org, const V3f& dir, float tnear
 
 bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
                          RayHit* hit) const {
-    const bool found = impl_->Trace(impl_->top, org, dir, tnear, tfar, time, hit);
+    bool found = impl_->Trace(impl_->top, org, dir, tnear, tfar, time, hit);
     // Frames without solids pay this one test.
-    if (!impl_->trees) return found;
     RayHit solid;
-    if (!impl_->IntersectSolids(org, dir, tnear, found ? hit->t : tfar, time, &solid)) return found;
-    *hit = solid;
-    return true;
+    if (impl_->trees &&
+        impl_->IntersectSolids(org, dir, tnear, found ? hit->t : tfar, time, &solid)) {
+        *hit = solid;
+        found = true;
+    }
+    // And frames without archives out of view this one: the ray reaches those its way to the
+    // hit passes through.
+    if (impl_->lazyScene) impl_->MarkLazyProcedurals(org, dir, tnear, found ? hit->t : tfar, time);
+    return found;
 }
 
 bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {
+    // The whole segment, not only up to an occluder: occlusion does not say which is first.
+    if (impl_->lazyScene) impl_->MarkLazyProcedurals(org, dir, tnear, tfar, time);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray = impl_->MakeRay(org, dir, tnear, tfar, time);

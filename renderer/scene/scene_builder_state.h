@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,12 @@ struct SceneBuilder::State {
     int frameNumber = 0;
     int worldsBegun = 0;
     ColorPlan colorPlan;
+    std::map<int, LazyExpansion> lazyExpansions;  // by frame ordinal
+    bool forwardingMessages = false;              // inside an archive of a LazyExpansion::firstRead
+    // Procedural keys (lazy_procedurals.h): the key of each procedural being read, outermost
+    // first, and how many procedurals each of them (and the world itself, first) has met.
+    std::vector<std::string> proceduralKeys;
+    std::vector<int> proceduralCounts{0};
     // The current world's choice from colorPlan, or null.
     const ColorChoice* colorChoice = nullptr;
     Frame frame;
