@@ -320,21 +320,22 @@ void SceneBuilder::Torus(float majorRadius, float minorRadius, float phimin, flo
 
 namespace {
 
-// A repelling plane's depth map, found on the texture search path (as shadow() finds its maps),
-// with its camera carried into the Blobby's object space: depth maps share world space with the
-// frame that rendered them.
-BlobbyDepthMapLookup DepthMapsFor(std::vector<std::string> searchPath,
+// A repelling plane's depth map, found on the texture search path (as shadow() finds its maps)
+// and read once per frame (`maps`), with its camera carried into the Blobby's object space:
+// depth maps share world space with the frame that rendered them.
+BlobbyDepthMapLookup DepthMapsFor(FileCache<DepthMapCamera>* maps,
+                                  std::vector<std::string> searchPath,
                                   const M44f& worldFromObject) {
-    return [searchPath = std::move(searchPath), worldFromObject](
+    return [maps, searchPath = std::move(searchPath), worldFromObject](
                const std::string& name, std::string* why) -> std::shared_ptr<const BlobbyDepthMap> {
         const std::string path = FindOnSearchPath(name, searchPath);
         if (path.empty()) {
             *why = "no such file on the texture search path";
             return nullptr;
         }
-        std::unique_ptr<DepthMapCamera> map = ReadDepthMapCamera(path, why);
+        const std::shared_ptr<const DepthMapCamera> map = maps->Get(path, why, ReadDepthMapCamera);
         if (!map) return nullptr;
-        return std::make_shared<BlobbyDepthMap>(map->width, map->height, std::move(map->depth),
+        return std::make_shared<BlobbyDepthMap>(map->width, map->height, map->depth,
                                                 worldFromObject * map->cameraFromWorld,
                                                 worldFromObject * map->screenFromWorld);
     };
@@ -353,7 +354,8 @@ void SceneBuilder::Blobby(int nleaf, const std::vector<int>& code, const std::ve
     std::vector<std::string> notes;
     auto blobby =
         MakeBlobby(nleaf, code, floats, strings, vars, rates, &notes,
-                   DepthMapsFor(TextureSearchPath(state_->options, sceneFile_), state_->transform));
+                   DepthMapsFor(state_->depthMaps.get(),
+                                TextureSearchPath(state_->options, sceneFile_), state_->transform));
     for (const std::string& note : notes)
         diagnostics_.WarningOnce("Blobby " + note, loc, "Blobby: " + note);
     if (!blobby) {

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "base/file_cache.h"
+#include "renderer/scene/depth_map_camera.h"
 #include "renderer/scene/primvar_typing.h"
 #include "renderer/scene/scene_builder.h"
 
@@ -50,6 +52,10 @@ struct SceneBuilder::State {
     // The current world's choice from colorPlan, or null.
     const ColorChoice* colorChoice = nullptr;
     Frame frame;
+    // The depth maps of the frame's Blobby repelling planes, each read once; anew every frame,
+    // since an earlier frame may have rendered them again.
+    std::unique_ptr<FileCache<DepthMapCamera>> depthMaps =
+        std::make_unique<FileCache<DepthMapCamera>>();
     std::map<std::string, M44f> namedSpaces;  // current base space from the named space
     std::map<std::string, int> lightHandles;
     // Lights declared before WorldBegin (Aqsis and PRMan allow it), in camera space; they join

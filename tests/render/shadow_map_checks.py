@@ -15,8 +15,8 @@
 * a shadow map that does not exist warns once and falls back to traced shadows (the same image);
 * a Blobby's repelling plane (opcode 1003) is the surface of the depth map it names: a sphere
   cut by a stepped ground rendered into a zfile stays in front of the ground on each side of the
-  step, and with a map that does not exist it warns (file:line) and is whole (the plane z = 0 is
-  out of its reach).
+  step (and on both sides alike once a later frame has rendered the ground flat), and with a map
+  that does not exist it warns (file:line) and is whole (the plane z = 0 is out of its reach).
 
     shadow_map_checks.py --gonio build/bin/gonio"""
 
@@ -311,19 +311,25 @@ def nearest_blob_depths(image):
 
 
 def blobby_plane_repels_from_the_depth_map(ws):
+    # Frame 4 renders the ground again, flat at depth 3: frame 5's Blobby reads the new map.
+    flat = GROUND_FRAME.replace("FrameBegin 1", "FrameBegin 4").replace("2.85", "3")
     rib = (GROUND_FRAME + BLOB_FRAME.format(n=2, name="cut", map="ground.z") +
-           BLOB_FRAME.format(n=3, name="whole", map="nothere.z"))
+           BLOB_FRAME.format(n=3, name="whole", map="nothere.z") + flat +
+           BLOB_FRAME.format(n=5, name="flat", map="ground.z"))
     proc = ws.render(rib, "blobplane")
     warnings = re.findall(r".*warning: .*", proc.stderr)
     expect(len(warnings) == 1 and re.match(r".*blobplane\.rib:\d+(:\d+)?: warning", warnings[0])
            and '"nothere.z" is not used' in warnings[0],
            f"expected one located warning about the missing map, got:\n{proc.stderr}")
-    cut, whole = read_images(ws.path("cut.exr"), ws.path("whole.exr"))
+    cut, whole, flat_cut = read_images(*(ws.path(f + ".exr") for f in ("cut", "whole", "flat")))
     # From behind, the nearest blob points are the cut face, just in front of the ground (the
     # repulsion −B/h·(1 − ease(h/A)) brings the field under 0.5 within about 0.04 of it).
     left, right = nearest_blob_depths(cut)
     expect(6 - 3 < left < 6 - 3 + 0.06, f"left of the step the blob reaches depth {left}")
     expect(6 - 2.85 < right < 6 - 2.85 + 0.06, f"right of the step the blob reaches depth {right}")
+    left, right = nearest_blob_depths(flat_cut)
+    expect(abs(left - right) < 0.01 and 6 - 3 < right < 6 - 3 + 0.06,
+           f"on the flat ground the blob reaches depths {left}, {right}")
     # Without its map the plane is z = 0, 3 units away: the sphere is whole, its back at 3.4542.
     left, right = nearest_blob_depths(whole)
     expect(abs(left - (6 - 3.4542)) < 0.03 and abs(right - (6 - 3.4542)) < 0.03,
