@@ -19,16 +19,20 @@ std::string FileLoc::ToString() const {
 
 void Diagnostics::Report(Severity severity, const FileLoc& loc, const std::string& message) {
     static const char* const kLabels[] = {"note", "warning", "error"};
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (severity == Severity::Error) ++errors_;
-    if (severity == Severity::Warning) ++warnings_;
-    if (!sink_) return;
-    if (loc.file)
-        std::fprintf(sink_, "%s: %s: %s\n", loc.ToString().c_str(),
-                     kLabels[static_cast<int>(severity)], message.c_str());
-    else
-        std::fprintf(sink_, "gonio: %s: %s\n", kLabels[static_cast<int>(severity)],
-                     message.c_str());
+    Diagnostics* forward = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        forward = forward_;
+        if (severity == Severity::Error) ++errors_;
+        if (severity == Severity::Warning) ++warnings_;
+        if (sink_ && loc.file)
+            std::fprintf(sink_, "%s: %s: %s\n", loc.ToString().c_str(),
+                         kLabels[static_cast<int>(severity)], message.c_str());
+        else if (sink_)
+            std::fprintf(sink_, "gonio: %s: %s\n", kLabels[static_cast<int>(severity)],
+                         message.c_str());
+    }
+    if (forward) forward->Report(severity, loc, message);  // outside the lock: it takes its own
 }
 
 void Diagnostics::ReportOnce(Severity severity, const std::string& key, const FileLoc& loc,

@@ -44,11 +44,19 @@ class Diagnostics {
     void ReportOnce(Severity severity, const std::string& key, const FileLoc& loc,
                     const std::string& message);
 
+    // While set, every message is also reported to `to` (null: no more): a silent reading of a
+    // scene passes on the messages of what only it reads.
+    void ForwardTo(Diagnostics* to) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        forward_ = to;
+    }
+
     int ErrorCount() const { return errors_; }
     int WarningCount() const { return warnings_; }
 
   private:
     std::FILE* sink_;
+    Diagnostics* forward_ = nullptr;
     std::mutex mutex_;
     std::set<std::string> seenKeys_;
     int errors_ = 0;

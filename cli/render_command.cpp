@@ -85,16 +85,16 @@ void PrintStats(const Frame& frame, const RenderStats& stats) {
         breakdown.c_str(), stats.seconds > 0 ? total / stats.seconds * 1e-6 : 0.0);
 }
 
-// The scene file; standard input can be read only once, and a scene with bands or svd is read
-// twice.
+// The scene file; standard input can be read only once, and a scene with bands or svd, or whose
+// rays reach a DelayedReadArchive out of view, is read again.
 RibReader ReaderOf(const std::string& scene, Diagnostics& reported) {
     auto reads = std::make_shared<int>(0);
     return [scene, reads, &reported](RiTarget& target, Diagnostics& diagnostics) {
         if (scene == "-" && (*reads)++ > 0) {
             reported.Error(FileLoc{std::make_shared<const std::string>("<stdin>"), 0, 0},
-                           "a frame with Option \"spectral\" \"basis\" \"bands\" or \"svd\" "
-                           "is read twice, and standard input only once: give the scene as a "
-                           "file");
+                           "a frame with Option \"spectral\" \"basis\" \"bands\" or \"svd\", "
+                           "or whose rays reach a DelayedReadArchive out of view, is read "
+                           "again, and standard input only once: give the scene as a file");
             return;
         }
         ParseRibFile(scene, target, diagnostics);

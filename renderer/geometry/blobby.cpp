@@ -106,6 +106,20 @@ void AddBlendedVars(const BlobbyField& field, const PrimVarSet& vars, TriangleMe
             MeshVar{WithValues(*blended[v], std::move(values[v])), MeshRate::PerVertex});
 }
 
+// Each repelling plane's depth map; a plane whose map cannot be had keeps z = 0 of object space.
+void AttachDepthMaps(const BlobbyDepthMapLookup& findDepthMap, BlobbyProgram* program,
+                     std::vector<std::string>* notes) {
+    for (BlobbyLeaf& leaf : program->leaves) {
+        if (leaf.kind != BlobbyLeaf::Kind::Plane) continue;
+        std::string why = "no depth maps are read here";
+        if (findDepthMap) leaf.depthMap = findDepthMap(leaf.name, &why);
+        if (!leaf.depthMap)
+            notes->push_back("the repelling plane's depth map \"" + leaf.name + "\" is not used (" +
+                             why +
+                             "): the plane is z = 0 of object space, with z the height above it");
+    }
+}
+
 }  // namespace
 
 float BlobbyTessellation::CellSize(float feature, const std::vector<Box3f>& supports,
@@ -126,10 +140,12 @@ GeometryResult<BlobbyMesh> MakeBlobby(int nleaf, const std::vector<int>& code,
                                       const std::vector<float>& floats,
                                       const std::vector<std::string>& strings,
                                       const PrimVarSet& vars, const BlobbyTessellation& rates,
-                                      std::vector<std::string>* notes) {
+                                      std::vector<std::string>* notes,
+                                      const BlobbyDepthMapLookup& findDepthMap) {
     using Result = GeometryResult<BlobbyMesh>;
     auto program = DecodeBlobby(nleaf, code, floats, strings, notes);
     if (!program) return Result::Error(program.Error());
+    AttachDepthMaps(findDepthMap, &program.Value(), notes);
     const int leaves = static_cast<int>(program.Value().leaves.size());
     if (auto bad = CheckCounts(vars, ClassCounts{1, leaves, leaves, leaves}))
         return Result::Error(*bad);

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/geometry/blobby_depth_map.h"
 #include "renderer/geometry/geometry_result.h"
 #include "renderer/geometry/shape.h"
 
@@ -46,10 +47,13 @@ struct BlobbyMesh {
 };
 
 // `notes` receives warnings (see DecodeBlobby) and says when nothing was rendered.
+// `findDepthMap` gives each repelling plane its depth map; without one, or where it finds none,
+// the plane is z = 0 of object space, with a note.
 GeometryResult<BlobbyMesh> MakeBlobby(int nleaf, const std::vector<int>& code,
                                       const std::vector<float>& floats,
                                       const std::vector<std::string>& strings,
                                       const PrimVarSet& vars, const BlobbyTessellation& rates,
-                                      std::vector<std::string>* notes);
+                                      std::vector<std::string>* notes,
+                                      const BlobbyDepthMapLookup& findDepthMap = {});
 
 }  // namespace gonio

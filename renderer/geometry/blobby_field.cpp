@@ -51,10 +51,11 @@ void Ease(float r, float* value, float* slope) {
     *slope = 6 * r * (1 - r);
 }
 
-// (D·bump(z/C) − B/z)·(1 − ease(z/A)) of the height z, and its derivative in z.
-FieldSample Repulsion(const BlobbyLeaf& leaf, float z) {
+// (D·bump(z/C) − B/z)·(1 − ease(z/A)) of the height z above the plane, whose gradient is ∇z:
+// the chain rule carries the derivative in z to object space.
+FieldSample Repulsion(const BlobbyLeaf& leaf, float z, const V3f& gradientZ) {
     constexpr float kZClamp = 1e-6f;  // Application Note #31's ZCLAMP
-    if (z >= leaf.A) return {};
+    if (!(z < leaf.A)) return {};     // also a height of +inf: no surface under the point
     const bool clamped = z <= kZClamp;
     z = std::max(z, kZClamp);
     float bump, bumpSlope, ease, easeSlope;
@@ -64,7 +65,15 @@ FieldSample Repulsion(const BlobbyLeaf& leaf, float z) {
     const float nearSlope = leaf.D * bumpSlope / leaf.C + leaf.B / (z * z);
     const float value = near * (1 - ease);
     const float slope = clamped ? 0.f : nearSlope * (1 - ease) - near * easeSlope / leaf.A;
-    return {value, V3f(0, 0, slope)};
+    return {value, slope * gradientZ};
+}
+
+// The repelling plane's field at p: the height above its depth map's surface, or above z = 0
+// of object space when it has no map.
+FieldSample PlaneField(const BlobbyLeaf& leaf, const V3f& p) {
+    if (!leaf.depthMap) return Repulsion(leaf, p.z, V3f(0, 0, 1));
+    const BlobbyDepthMap::Height height = leaf.depthMap->HeightAt(p);
+    return Repulsion(leaf, height.value, height.gradient);
 }
 
 // The point of the segment [a, b] nearest q.
@@ -203,7 +212,7 @@ FieldSample BlobbyField::LeafField(const BlobbyLeaf& leaf, const V3f& p) const {
         case Kind::Constant:
             return {leaf.constant, V3f(0)};
         case Kind::Plane:
-            return Repulsion(leaf, p.z);
+            return PlaneField(leaf, p);
         case Kind::Plugin:
             return {};
         case Kind::Ellipsoid:

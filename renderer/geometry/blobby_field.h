@@ -14,8 +14,9 @@
 // ≈ 0.4542. (Aqsis draws the level 27/64 instead, radius 0.5; gonio keeps RISpec's 0.5.)
 //
 // The repelling plane (1003) is Application Note #31's repulsion of the height z above the
-// plane, (D·bump(z/C) − B/z)·(1 − ease(z/A)), with z clamped to ≥ 10⁻⁶; gonio reads no depth
-// map, so the plane is z = 0 of object space.
+// plane, (D·bump(z/C) − B/z)·(1 − ease(z/A)), with z clamped to ≥ 10⁻⁶: z is the height above
+// the surface of the plane's depth map along the map's view (blobby_depth_map.h), or above z = 0
+// of object space when the plane has no map.
 
 #include <vector>
 

@@ -131,10 +131,6 @@ class BlobbyDecoder {
                 leaf.C = floats_[f + 2], leaf.D = floats_[f + 3];
                 if (!(leaf.A > 0 && leaf.C > 0))
                     return Fail(start_, "the repelling plane's A and C must be > 0");
-                notes_->push_back(
-                    "the repelling plane's depth map \"" + leaf.name +
-                    "\" is not read (gonio has no depth maps): the plane is z = 0 of object "
-                    "space, with z the height above it");
                 break;
             case 1004: {
                 int nf = 0, ns = 0, sf = 0;

@@ -24,9 +24,11 @@
 #include <Imath/ImathBox.h>
 #include <Imath/ImathMatrix.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "renderer/geometry/blobby_depth_map.h"
 #include "renderer/geometry/geometry_result.h"
 #include "renderer/geometry/shape.h"
 
@@ -46,6 +48,8 @@ struct BlobbyLeaf {
     float radius = 1;     // Segment
     float A = 0, B = 0, C = 1, D = 0;  // Plane: RISpec's repulsion parameters
     std::string name;                  // Plane: the depth map; Plugin: the plugin
+    // Plane: the surface its depth map holds; null for the plane z = 0 of object space.
+    std::shared_ptr<const BlobbyDepthMap> depthMap;
     Box3f support;  // object-space box outside which the field is 0 (empty: none)
 };
 
@@ -62,8 +66,8 @@ struct BlobbyProgram {
 };
 
 // Decodes and checks a Blobby request's arrays. Errors name the code array position, e.g.
-// "code[4]: unknown opcode 9". `notes` receives warnings (a plugin leaf, a depth map that is
-// not read, nleaf disagreeing with the code's primitive fields).
+// "code[4]: unknown opcode 9". `notes` receives warnings (a plugin leaf, nleaf disagreeing with
+// the code's primitive fields). Planes are left without their depth maps (MakeBlobby finds them).
 GeometryResult<BlobbyProgram> DecodeBlobby(int nleaf, const std::vector<int>& code,
                                            const std::vector<float>& floats,
                                            const std::vector<std::string>& strings,

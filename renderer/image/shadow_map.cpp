@@ -5,19 +5,9 @@
 #include <limits>
 
 #include "base/hash.h"
-#include "imageio/depth_map_file.h"
+#include "renderer/scene/depth_map_camera.h"
 
 namespace gonio {
-
-namespace {
-
-Imath::M44f FromRowMajor(const std::vector<float>& values) {
-    Imath::M44f m;
-    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = values[i];
-    return m;
-}
-
-}  // namespace
 
 ShadowMap::ShadowMap(int width, int height, std::vector<float> depth,
                      const Imath::M44f& cameraFromWorld, const Imath::M44f& screenFromWorld)
@@ -28,16 +18,10 @@ ShadowMap::ShadowMap(int width, int height, std::vector<float> depth,
       screenFromCamera_(cameraFromWorld.inverse() * screenFromWorld) {}
 
 std::unique_ptr<ShadowMap> ShadowMap::Read(const std::string& path, std::string* error) {
-    ImageFileContents file;
-    *error = ReadDepthMapFile(path, &file);
-    if (!error->empty()) return nullptr;
-    if (file.spec.worldToCamera.size() != 16 || file.spec.worldToScreen.size() != 16) {
-        *error = "\"" + path + "\" records no camera (world-to-camera and world-to-screen)";
-        return nullptr;
-    }
-    return std::make_unique<ShadowMap>(file.spec.width, file.spec.height, std::move(file.pixels),
-                                       FromRowMajor(file.spec.worldToCamera),
-                                       FromRowMajor(file.spec.worldToScreen));
+    std::unique_ptr<DepthMapCamera> map = ReadDepthMapCamera(path, error);
+    if (!map) return nullptr;
+    return std::make_unique<ShadowMap>(map->width, map->height, std::move(map->depth),
+                                       map->cameraFromWorld, map->screenFromWorld);
 }
 
 Imath::V2f ShadowMap::MapPosition(const Imath::V3f& Pc) const {

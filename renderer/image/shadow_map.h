@@ -33,8 +33,8 @@ class ShadowMap {
     ShadowMap(int width, int height, std::vector<float> depth, const Imath::M44f& cameraFromWorld,
               const Imath::M44f& screenFromWorld);
 
-    // Reads a shadow map or a depth map (imageio/depth_map_file.h); null and the reason when the
-    // file is missing, is not a depth map or records no camera.
+    // Reads a shadow map or a depth map (renderer/scene/depth_map_camera.h); null and the reason
+    // when the file is missing, is not a depth map or records no camera.
     static std::unique_ptr<ShadowMap> Read(const std::string& path, std::string* error);
 
     // The fraction of the filter region around world-space point P that is in shadow: 0 lit,

@@ -67,6 +67,7 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics, Traversal trave
     }
     rtcCommitScene(s.top.scene);
     if (s.solids.scene) rtcCommitScene(s.solids.scene);
+    if (!frame.lazyProcedurals.All().empty()) s.WatchLazyProcedurals(frame.lazyProcedurals);
 }
 
 int RayScene::Impl::NewLevel(const std::vector<const SceneShape*>& shapes, bool inObjectSpace) {

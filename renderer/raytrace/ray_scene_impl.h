@@ -1,7 +1,8 @@
 #pragma once
 // What the pieces of RayScene share (ray_scene.cpp, ray_scene_geometry.cpp,
-// ray_scene_queries.cpp, ray_scene_evaluation.cpp): the private Impl and the records it keeps
-// for each Embree geometry. Only those files include it, and with it Embree (STYLE.md habit 3).
+// ray_scene_queries.cpp, ray_scene_evaluation.cpp, ray_scene_lazy.cpp): the private Impl and the
+// records it keeps for each Embree geometry. Only those files include it, and with it Embree
+// (STYLE.md habit 3).
 
 #include <embree3/rtcore.h>
 
@@ -75,6 +76,8 @@ struct RayScene::Impl {
     std::unique_ptr<SolidTrees> trees;
     std::vector<SceneLevel> definitions;
     std::vector<InstancePlacement> instances;
+    // The bounds of the archives not read (Frame::lazyProcedurals); null scene: none.
+    RTCScene lazyScene = nullptr;
 
     RTCSceneFlags sceneFlags = RTC_SCENE_FLAG_ROBUST;  // of every Embree scene it makes
     explicit Impl(Diagnostics& d) : diagnostics(d) {}
@@ -82,10 +85,16 @@ struct RayScene::Impl {
         for (SceneLevel& level : definitions) rtcReleaseScene(level.scene);
         if (top.scene) rtcReleaseScene(top.scene);
         if (solids.scene) rtcReleaseScene(solids.scene);
+        if (lazyScene) rtcReleaseScene(lazyScene);
         if (device) rtcReleaseDevice(device);
     }
 
     void AddShape(SceneLevel& level, const SceneShape& shape, const M44f& spaceFromObject);
+    // The archives out of view, one Embree user primitive each (ray_scene_lazy.cpp), and the
+    // marking of those a ray segment passes through.
+    void WatchLazyProcedurals(const LazyProcedurals& lazy);
+    void MarkLazyProcedurals(const V3f& org, const V3f& dir, float tnear, float tfar,
+                             float time) const;
     void Place(int level, const M44f& worldFromDefinition, const ObjectInstanceUse* use,
                const std::vector<float>& motionTimes, const std::vector<M44f>& motion);
     // A scene of its own for shapes placed by Place: in their definition space, or, for one

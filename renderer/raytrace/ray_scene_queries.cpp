@@ -71,16 +71,23 @@ bool RayScene::Impl::IntersectSolids(const V3f& org, const V3f& dir, float tnear
 
 bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
                          RayHit* hit) const {
-    const bool found = impl_->Trace(impl_->top, org, dir, tnear, tfar, time, hit);
+    bool found = impl_->Trace(impl_->top, org, dir, tnear, tfar, time, hit);
     // Frames without solids pay this one test.
-    if (!impl_->trees) return found;
     RayHit solid;
-    if (!impl_->IntersectSolids(org, dir, tnear, found ? hit->t : tfar, time, &solid)) return found;
-    *hit = solid;
-    return true;
+    if (impl_->trees &&
+        impl_->IntersectSolids(org, dir, tnear, found ? hit->t : tfar, time, &solid)) {
+        *hit = solid;
+        found = true;
+    }
+    // And frames without archives out of view this one: the ray reaches those its way to the
+    // hit passes through.
+    if (impl_->lazyScene) impl_->MarkLazyProcedurals(org, dir, tnear, found ? hit->t : tfar, time);
+    return found;
 }
 
 bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {
+    // The whole segment, not only up to an occluder: occlusion does not say which is first.
+    if (impl_->lazyScene) impl_->MarkLazyProcedurals(org, dir, tnear, tfar, time);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray = impl_->MakeRay(org, dir, tnear, tfar, time);

@@ -4,7 +4,9 @@
 #include <Imath/ImathMatrixAlgo.h>
 
 #include <cmath>
+#include <memory>
 
+#include "base/search_path.h"
 #include "renderer/geometry/blobby.h"
 #include "renderer/geometry/curves.h"
 #include "renderer/geometry/nurbs.h"
@@ -15,7 +17,9 @@
 #include "renderer/geometry/quadrics.h"
 #include "renderer/geometry/subdivision.h"
 #include "renderer/geometry/teapot.h"
+#include "renderer/scene/depth_map_camera.h"
 #include "renderer/scene/scene_builder_state.h"
+#include "renderer/scene/search_paths.h"
 
 namespace gonio {
 
@@ -314,6 +318,31 @@ void SceneBuilder::Torus(float majorRadius, float minorRadius, float phimin, flo
 
 // ---- implicit surfaces ----------------------------------------------------------------------
 
+namespace {
+
+// A repelling plane's depth map, found on the texture search path (as shadow() finds its maps)
+// and read once per frame (`maps`), with its camera carried into the Blobby's object space:
+// depth maps share world space with the frame that rendered them.
+BlobbyDepthMapLookup DepthMapsFor(FileCache<DepthMapCamera>* maps,
+                                  std::vector<std::string> searchPath,
+                                  const M44f& worldFromObject) {
+    return [maps, searchPath = std::move(searchPath), worldFromObject](
+               const std::string& name, std::string* why) -> std::shared_ptr<const BlobbyDepthMap> {
+        const std::string path = FindOnSearchPath(name, searchPath);
+        if (path.empty()) {
+            *why = "no such file on the texture search path";
+            return nullptr;
+        }
+        const std::shared_ptr<const DepthMapCamera> map = maps->Get(path, why, ReadDepthMapCamera);
+        if (!map) return nullptr;
+        return std::make_shared<BlobbyDepthMap>(map->width, map->height, map->depth,
+                                                worldFromObject * map->cameraFromWorld,
+                                                worldFromObject * map->screenFromWorld);
+    };
+}
+
+}  // namespace
+
 // RISpec 3.2 §5.6: tessellated at a density set by ShadingRate (renderer/geometry/blobby.h).
 void SceneBuilder::Blobby(int nleaf, const std::vector<int>& code, const std::vector<float>& floats,
                           const std::vector<std::string>& strings, const ParamList& params,
@@ -323,7 +352,10 @@ void SceneBuilder::Blobby(int nleaf, const std::vector<int>& code, const std::ve
     BlobbyTessellation rates;
     rates.shadingRate = state_->attributes.shadingRate;
     std::vector<std::string> notes;
-    auto blobby = MakeBlobby(nleaf, code, floats, strings, vars, rates, &notes);
+    auto blobby =
+        MakeBlobby(nleaf, code, floats, strings, vars, rates, &notes,
+                   DepthMapsFor(state_->depthMaps.get(),
+                                TextureSearchPath(state_->options, sceneFile_), state_->transform));
     for (const std::string& note : notes)
         diagnostics_.WarningOnce("Blobby " + note, loc, "Blobby: " + note);
     if (!blobby) {

@@ -1,8 +1,12 @@
-// Procedural (RISpec 3.2 §5.7): the RIB a procedural stands for is read at once, in an attribute
-// block of its own, unless its bound lies outside the viewing frustum: then it is never read.
-// That is the scene-build form of the lazy expansion the RISpec describes (a renderer calls a
-// procedural when its bound first matters); a ray tracer could also need geometry outside the
-// frustum in reflections and shadows, which this gives up for scenes that rely on the bound.
+// Procedural (RISpec 3.2 §5.7): the RIB a procedural stands for is read in an attribute block of
+// its own, at once when its bound lies in the viewing frustum. Outside it, a RunProgram or
+// DynamicLoad procedural is never run, and a DelayedReadArchive is read only if a ray reaches
+// its bound: it is recorded in the frame (lazy_procedurals.h), and when the rendered frame's rays
+// reached it, BuildScene reads the scene again with it expanded (SetLazyExpansion). A ray tracer
+// sees archives out of view in mirrors and shadows that way, and one no ray reaches is never
+// opened.
+
+#include <Imath/ImathBoxAlgo.h>
 
 #include <limits>
 
@@ -15,7 +19,15 @@ namespace {
 // Option "limits" "proceduraltimeout": how long a RunProgram program may take.
 constexpr float kDefaultProceduralTimeout = 60;
 
+Box3f BoundOf(const std::vector<float>& bound6) {
+    return Box3f(V3f(bound6[0], bound6[2], bound6[4]), V3f(bound6[1], bound6[3], bound6[5]));
+}
+
 }  // namespace
+
+void SceneBuilder::SetLazyExpansion(int ordinal, LazyExpansion expansion) {
+    state_->lazyExpansions[ordinal] = std::move(expansion);
+}
 
 void SceneBuilder::Procedural(const std::string& name, const std::vector<std::string>&,
                               const std::vector<float>& bound6, ProceduralReader& reader,
@@ -28,22 +40,42 @@ void SceneBuilder::Procedural(const std::string& name, const std::vector<std::st
                                     std::to_string(bound6.size()));
         return;
     }
-    const Options& options = state_->options;
+    State& s = *state_;
+    const std::string key = (s.proceduralKeys.empty() ? "" : s.proceduralKeys.back() + "/") +
+                            std::to_string(s.proceduralCounts.back()++);
+    const Options& options = s.options;
     float detail = std::numeric_limits<float>::infinity();
     // Inside an object definition the camera is not where instances will be; the photon
     // tracer (BRDFLight) has no camera at all.
-    const bool cull =
-        !state_->openObject && state_->motionTimes.empty() && !options.user.count("BRDFLight");
-    if (cull && !BoxInViewFrustum(options, state_->transform * options.cameraFromWorld,
-                                  bound6.data(), &detail))
-        return;
+    const bool cull = !s.openObject && s.motionTimes.empty() && !options.user.count("BRDFLight");
+    bool forward = false;  // this archive's messages go on to LazyExpansion::report
+    if (cull &&
+        !BoxInViewFrustum(options, s.transform * options.cameraFromWorld, bound6.data(), &detail)) {
+        if (name != "DelayedReadArchive") return;
+        const auto expansion = s.lazyExpansions.find(s.frame.ordinal);
+        if (expansion == s.lazyExpansions.end() || !expansion->second.keys.count(key)) {
+            s.frame.lazyProcedurals.Add({Imath::transform(BoundOf(bound6), s.transform), key});
+            return;
+        }
+        forward = !s.forwardingMessages && expansion->second.firstRead.count(key);
+        if (forward) diagnostics_.ForwardTo(expansion->second.report);
+    }
     const auto limits = options.user.find("limits");
     const double timeout =
         limits == options.user.end()
             ? kDefaultProceduralTimeout
             : limits->second.GetFloat("proceduraltimeout", kDefaultProceduralTimeout);
     AttributeBegin(loc);
+    s.proceduralKeys.push_back(key);
+    s.proceduralCounts.push_back(0);
+    s.forwardingMessages |= forward;
     reader.Read(detail, timeout);
+    if (forward) {
+        diagnostics_.ForwardTo(nullptr);
+        s.forwardingMessages = false;
+    }
+    s.proceduralKeys.pop_back();
+    s.proceduralCounts.pop_back();
     AttributeEnd(loc);
 }
 

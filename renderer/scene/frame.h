@@ -13,6 +13,7 @@
 
 #include "renderer/geometry/shape.h"
 #include "renderer/scene/attributes.h"
+#include "renderer/scene/lazy_procedurals.h"
 #include "renderer/scene/options.h"
 
 namespace gonio {
@@ -107,6 +108,8 @@ struct Frame {
     // CoordinateSystem names: world space from the named space.
     std::map<std::string, M44f> namedSpaces;
     std::string sceneFile;  // the RIB file, for resolving relative output and search paths
+    // The DelayedReadArchives outside the view, not read; rays mark those they reach.
+    LazyProcedurals lazyProcedurals;
 };
 
 }  // namespace gonio

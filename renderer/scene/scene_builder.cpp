@@ -154,6 +154,9 @@ void SceneBuilder::WorldBegin(const FileLoc& loc) {
     state_->frame.ordinal = state_->worldsBegun++;
     state_->frame.options = state_->options;
     state_->frame.sceneFile = sceneFile_;
+    state_->depthMaps = std::make_unique<FileCache<DepthMapCamera>>();
+    state_->proceduralKeys.clear();
+    state_->proceduralCounts.assign(1, 0);
     // Spaces named before WorldBegin were relative to camera space; re-express them in world.
     const M44f worldFromCamera = state_->transform.inverse();
     for (const auto& [name, m] : state_->namedSpaces)

@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,14 @@ class SceneBuilder : public RiTarget {
     void SetColorPlan(ColorPlan plan);
     // Where texture-making requests go; without a handler they are noted and ignored.
     void SetTextureHandler(TextureHandler onTexture);
+    // The DelayedReadArchives out of view that frame `ordinal` reads after all, by their keys
+    // (lazy_procedurals.h): those some ray of an earlier rendering of it reached. The messages
+    // of the archives in `firstRead` (read in no earlier reading) also go to `report`.
+    struct LazyExpansion {
+        std::set<std::string> keys, firstRead;
+        Diagnostics* report = nullptr;
+    };
+    void SetLazyExpansion(int ordinal, LazyExpansion expansion);
 
     void Declare(const std::string& name, const std::string& declaration,
                  const FileLoc& loc) override;

@@ -7,9 +7,12 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "base/file_cache.h"
+#include "renderer/scene/depth_map_camera.h"
 #include "renderer/scene/primvar_typing.h"
 #include "renderer/scene/scene_builder.h"
 
@@ -40,9 +43,19 @@ struct SceneBuilder::State {
     int frameNumber = 0;
     int worldsBegun = 0;
     ColorPlan colorPlan;
+    std::map<int, LazyExpansion> lazyExpansions;  // by frame ordinal
+    bool forwardingMessages = false;              // inside an archive of a LazyExpansion::firstRead
+    // Procedural keys (lazy_procedurals.h): the key of each procedural being read, outermost
+    // first, and how many procedurals each of them (and the world itself, first) has met.
+    std::vector<std::string> proceduralKeys;
+    std::vector<int> proceduralCounts{0};
     // The current world's choice from colorPlan, or null.
     const ColorChoice* colorChoice = nullptr;
     Frame frame;
+    // The depth maps of the frame's Blobby repelling planes, each read once; anew every frame,
+    // since an earlier frame may have rendered them again.
+    std::unique_ptr<FileCache<DepthMapCamera>> depthMaps =
+        std::make_unique<FileCache<DepthMapCamera>>();
     std::map<std::string, M44f> namedSpaces;  // current base space from the named space
     std::map<std::string, int> lightHandles;
     // Lights declared before WorldBegin (Aqsis and PRMan allow it), in camera space; they join

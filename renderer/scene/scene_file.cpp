@@ -1,15 +1,61 @@
 #include "renderer/scene/scene_file.h"
 
 #include <memory>
+#include <set>
 
 #include "spectral/spectral_error.h"
 
 namespace gonio {
 namespace {
 
+// How many times one frame is read again for archives its rays reached: each reading expands
+// one more level of archives nested in archives out of view.
+constexpr int kMaxLazyReadings = 8;
+
 FileLoc EndOf(const std::string& sceneName) {
     return FileLoc{std::make_shared<const std::string>(sceneName), 0, 0};
 }
+
+// The reading of a scene and where its frames go.
+struct SceneReading {
+    const std::string& sceneName;
+    const RibReader& read;
+    Diagnostics& diagnostics;
+    const SceneBuilder::FrameHandler& onFrame;
+    const ColorPlan& plan;
+
+    // Hands `frame` over; then, while its rays reached DelayedReadArchives it has not read
+    // (lazy_procedurals.h), reads the scene again with those expanded too, and hands that frame
+    // over instead. Silently, but for the archives read for the first time: the rest of the
+    // scene's messages were reported by the first reading.
+    void HandOver(const Frame& frame, std::set<std::string> expanded, int readings) const {
+        onFrame(frame);
+        const std::vector<std::string> reached = frame.lazyProcedurals.ReachedKeys();
+        if (reached.empty()) return;
+        if (readings == kMaxLazyReadings) {
+            diagnostics.Warning(EndOf(sceneName),
+                                "frame " + std::to_string(frame.number) +
+                                    ": rays still reach DelayedReadArchives not read after " +
+                                    std::to_string(kMaxLazyReadings) +
+                                    " readings of nested archives; they are left out");
+            return;
+        }
+        expanded.insert(reached.begin(), reached.end());
+        SceneBuilder::LazyExpansion expansion;
+        expansion.keys = expanded;
+        expansion.firstRead = {reached.begin(), reached.end()};
+        expansion.report = &diagnostics;
+        Diagnostics silent(nullptr);
+        SceneBuilder again(sceneName, silent, [&](const Frame& f) {
+            if (f.ordinal == frame.ordinal) HandOver(f, expanded, readings + 1);
+        });
+        again.SetColorPlan(plan);
+        again.SetLazyExpansion(frame.ordinal, std::move(expansion));
+        again.SetTextureHandler([](const TextureRequest&) {});  // made in the first reading
+        read(again, silent);
+        again.Finish(EndOf(sceneName));
+    }
+};
 
 }  // namespace
 
@@ -17,8 +63,9 @@ void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics
                 const SceneBuilder::FrameHandler& onFrame,
                 const SceneBuilder::TextureHandler& onTexture) {
     ColorPlan plan;
+    const SceneReading reading{sceneName, read, diagnostics, onFrame, plan};
     SceneBuilder builder(sceneName, diagnostics, [&](const Frame& frame) {
-        if (!frame.options.FitsColorSpaceToFrame()) return onFrame(frame);
+        if (!frame.options.FitsColorSpaceToFrame()) return reading.HandOver(frame, {}, 0);
         try {
             plan[frame.ordinal] = ChooseColorSpace(frame);
         } catch (const spectral::SpectralError& e) {
@@ -32,7 +79,7 @@ void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics
     if (plan.empty()) return;
     Diagnostics silent(nullptr);
     SceneBuilder fitted(sceneName, silent, [&](const Frame& frame) {
-        if (plan.count(frame.ordinal)) onFrame(frame);
+        if (plan.count(frame.ordinal)) reading.HandOver(frame, {}, 0);
     });
     fitted.SetColorPlan(plan);
     // The textures were made in the first reading; the second one passes their requests by.

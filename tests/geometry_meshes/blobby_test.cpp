@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
+#include <memory>
 #include <utility>
 
 #include "mesh_test_util.h"
@@ -191,6 +194,125 @@ TEST(BlobbyField, RepellingPlaneIsTheAppNoteRepulsionOfTheHeight) {
     }
     EXPECT_EQ(field.Evaluate(V3f(0, 0, 2.5f), &scratch).value, 0.f);
     EXPECT_TRUE(field.Bounds().isEmpty());
+}
+
+// A depth map seen straight down from 4 units above z = 0 of object space by an orthographic
+// camera whose screen covers [-half, half]²: each texel holds the depth of `ground(x, y)` at
+// its centre, 4 − ground.
+std::shared_ptr<BlobbyDepthMap> TopDownMap(int n, float half,
+                                           const std::function<float(float, float)>& ground) {
+    std::vector<float> depth(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float x = -half + (i + 0.5f) * 2 * half / n;
+            const float y = half - (j + 0.5f) * 2 * half / n;  // row 0 is the top
+            depth[size_t(j) * n + i] = 4 - ground(x, y);
+        }
+    const M44f cameraFromObject(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 4, 1);
+    const M44f screenFromObject(1 / half, 0, 0, 0, 0, 1 / half, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1);
+    return std::make_shared<BlobbyDepthMap>(n, n, std::move(depth), cameraFromObject,
+                                            screenFromObject);
+}
+
+// A lone repelling plane (A = 2, B = 0.01, C = 0.5, D = 0.3) given `map` (none: z = 0).
+BlobbyField PlaneField(std::shared_ptr<BlobbyDepthMap> map) {
+    std::vector<std::string> notes;
+    auto program = DecodeBlobby(0, {1003, 0, 0}, {2, 0.01f, 0.5f, 0.3f}, {"ground.z"}, &notes);
+    EXPECT_TRUE(program.Ok());
+    program.Value().leaves[0].depthMap = std::move(map);
+    return BlobbyField(program.Take());
+}
+
+TEST(BlobbyField, AFlatDepthMapIsThePlaneZEqualsZero) {
+    const BlobbyField plane = PlaneField(nullptr);
+    const BlobbyField mapped = PlaneField(TopDownMap(8, 3, [](float, float) { return 0.f; }));
+    std::vector<FieldSample> a, b;
+    // Heights whose depths 4 − z are exact in float; points inside and beyond the map's edge.
+    for (float z : {-0.5f, 0.f, 0.25f, 0.5f, 0.75f, 1.25f, 1.75f, 3.f})
+        for (const V3f& xy : {V3f(0.3f, -0.7f, 0), V3f(2.9f, 2.9f, 0), V3f(-5, 7, 0)}) {
+            const V3f p = xy + V3f(0, 0, z);
+            const FieldSample expected = plane.Evaluate(p, &a), got = mapped.Evaluate(p, &b);
+            EXPECT_EQ(got.value, expected.value) << p;
+            EXPECT_EQ(got.gradient, expected.gradient) << p;
+        }
+}
+
+TEST(BlobbyField, ATiltedDepthMapRepelsFromTheTiltedGround) {
+    // The ground z = 0.2·x: the height above it is z − 0.2·x, and the field's gradient is the
+    // flat plane's derivative times ∇(z − 0.2·x) = (−0.2, 0, 1). Bilinear interpolation
+    // reproduces a linear ground exactly between the texel centres.
+    const BlobbyField plane = PlaneField(nullptr);
+    const BlobbyField tilted =
+        PlaneField(TopDownMap(16, 3, [](float x, float) { return 0.2f * x; }));
+    std::vector<FieldSample> a, b;
+    for (const V3f& p : {V3f(0.4f, 0.3f, 0.5f), V3f(-1.7f, 1.1f, -0.1f), V3f(2.1f, -2.4f, 0.9f)}) {
+        const float height = p.z - 0.2f * p.x;
+        const FieldSample expected = plane.Evaluate(V3f(0, 0, height), &a);
+        const FieldSample got = tilted.Evaluate(p, &b);
+        EXPECT_NEAR(got.value, expected.value, 1e-4f * (1 + std::fabs(expected.value))) << p;
+        const V3f gradient = expected.gradient.z * V3f(-0.2f, 0, 1);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(got.gradient[k], gradient[k], 1e-3f * (1 + std::fabs(gradient[k]))) << p;
+    }
+    // A point the map saw nothing under is not repelled.
+    const BlobbyField empty = PlaneField(
+        TopDownMap(4, 3, [](float, float) { return -std::numeric_limits<float>::infinity(); }));
+    EXPECT_EQ(empty.Evaluate(V3f(0, 0, 0.1f), &b).value, 0.f);
+}
+
+// A unit ellipsoid at the origin (surface radius 0.4542) cut by a strongly repelling plane (D = 0,
+// B = 0.01): below the ground the height is clamped and the field is about −B/10⁻⁶, so no
+// surface reaches under it. The lowest vertex left of x = −0.1 and right of x = 0.1, with
+// `ground`.
+std::pair<float, float> LowestLeftAndRight(const std::function<float(float, float)>& ground) {
+    const std::vector<float> floats = Concat({Matrix(V3f(1), V3f(0)), {1, 0.01f, 1, 0}});
+    const std::shared_ptr<const BlobbyDepthMap> map = TopDownMap(64, 1, ground);
+    std::vector<std::string> notes;
+    auto result =
+        MakeBlobby(2, {1001, 0, 1003, 0, 16, 0, 2, 0, 1}, floats, {"ground.z"}, {},
+                   BlobbyTessellation{}, &notes, [&](const std::string& name, std::string*) {
+                       EXPECT_EQ(name, "ground.z");
+                       return map;
+                   });
+    EXPECT_TRUE(result.Ok());
+    EXPECT_TRUE(notes.empty()) << notes.front();
+    std::pair<float, float> lowest(1e9f, 1e9f);
+    for (const V3f& p : result.Value().mesh.positions) {
+        if (p.x < -0.1f) lowest.first = std::min(lowest.first, p.z);
+        if (p.x > 0.1f) lowest.second = std::min(lowest.second, p.z);
+    }
+    return lowest;
+}
+
+TEST(Blobby, ASteppedDepthMapMovesTheRepelledSurface) {
+    const auto [flatLeft, flatRight] = LowestLeftAndRight([](float, float) { return -0.1f; });
+    EXPECT_GT(flatLeft, -0.1f);  // the sphere alone would reach z = −0.4542
+    EXPECT_LT(flatLeft, 0.f);
+    EXPECT_LT(flatRight, 0.f);
+    // The ground raised to z = 0.15 for x > 0: the right half's surface stays above it.
+    const auto [left, right] =
+        LowestLeftAndRight([](float x, float) { return x > 0 ? 0.15f : -0.1f; });
+    EXPECT_NEAR(left, flatLeft, 1e-4f);  // cells left of x = −0.1 never sample the step
+    EXPECT_GT(right, 0.15f);
+}
+
+TEST(Blobby, ARepellingPlaneWithoutItsDepthMapIsZEqualsZeroWithANote) {
+    std::vector<std::string> notes;
+    auto result = MakeBlobby(
+        2, {1001, 0, 1003, 0, 16, 0, 2, 0, 1}, Concat({Matrix(V3f(1), V3f(0)), {1, 0.01f, 1, 0}}),
+        {"gone.z"}, {}, BlobbyTessellation{}, &notes, [](const std::string&, std::string* why) {
+            *why = "no such file";
+            return std::shared_ptr<const BlobbyDepthMap>();
+        });
+    ASSERT_TRUE(result.Ok());
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0],
+              "the repelling plane's depth map \"gone.z\" is not used (no such file): the plane "
+              "is z = 0 of object space, with z the height above it");
+    float lowest = 1e9f;
+    for (const V3f& p : result.Value().mesh.positions) lowest = std::min(lowest, p.z);
+    EXPECT_GT(lowest, 0.f);
+    EXPECT_LT(lowest, 0.1f);
 }
 
 TEST(Blobby, OneEllipsoidIsTheSphereWhereTheFieldIsOneHalf) {

@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """End-to-end checks of Procedural and TrimCurve in `gonio render`: a RunProgram sphere lands
 where the program put it and is told its bound's raster area; a DelayedReadArchive outside the
-viewing frustum is never read (a broken archive gives no error) and inside it is; procedurals
+viewing frustum is never read (a broken archive gives no error) and inside it is, unless a ray
+reaches its bound: an archive seen only in a mirror, and archives nested in it, are read and
+render as the same RIB inline does, whatever the number of threads, as does one out of view that
+casts a shadow into it (reached by shadow rays only), while one behind the camera
+that no ray reaches is never opened (a file that does not exist gives no error); procedurals
 nest and leave the graphics state as they found it; a hanging program is killed after
 Option "limits" "proceduraltimeout"; a NuPatch square trimmed by a circle covers the disc's
 analytic area, and with an outer loop the square minus the disc.
@@ -99,6 +103,74 @@ def check_archive_outside_the_frustum_is_not_read(ws):
            f"the archive in view was not read, or its errors are not located:\n{proc.stderr}")
 
 
+# A mirror facing the camera at 45°, in the plane x = −z: camera rays (along +z) leave it along
+# −x, towards x = −6, far outside the view (|x| <= 2). What lies there is seen only in the mirror,
+# as if at (−z, y, 6).
+MIRROR = """Color 1 1 1
+Surface "mattemirror" "Kd" 0 "Kr" 1
+Polygon "P" [-1 -1 1  1 -1 -1  1 1 -1  -1 1 1]
+Surface "constant"
+"""
+RED_BALL = "Color 1 0 0\nTranslate -6 0 -0.6\nSphere 0.5 -0.5 0.5 360\n"
+GREEN_BALL = "Color 0 1 0\nTranslate -6 0 0.6\nSphere 0.4 -0.4 0.4 360\n"
+INNER = 'Procedural "DelayedReadArchive" ["inner.rib"] [-6.5 -5.5 -0.5 0.5 0.1 1.1]\n'
+OUTER = 'Procedural "DelayedReadArchive" ["outer.rib"] [-7 -5 -1 1 -1.2 1.2]\n'
+# Behind the camera (at z = −5 looking along +z) and in no reflected ray's way.
+UNREACHED = 'Procedural "DelayedReadArchive" ["nothere.rib"] [-1 1 -1 1 -10 -9]\n'
+
+
+def mirrored_balls(image):
+    """The red and green of the pixels nearest where the balls' reflections are centred."""
+    # ortho(): 32 pixels a unit, x = 0 at column 64; the reflections centre on x = 0.6 and −0.6.
+    red = image.pixels[(64 + 19, 64)]
+    green = image.pixels[(64 - 19, 64)]
+    return red[0], green[1]
+
+
+def check_archives_seen_in_a_mirror_are_read(ws):
+    write(ws, "outer.rib", f"AttributeBegin\n{RED_BALL}AttributeEnd\n{INNER}")
+    write(ws, "inner.rib", GREEN_BALL)
+    inline = (f"AttributeBegin\nAttributeBegin\n{RED_BALL}AttributeEnd\n"
+              f"AttributeBegin\n{GREEN_BALL}AttributeEnd\nAttributeEnd\n")
+    ws.render(frame("inline.tif", MIRROR + inline), "inline")
+    for threads in ("1", "4"):
+        proc = ws.render(frame(f"lazy{threads}.tif", MIRROR + OUTER + UNREACHED),
+                         f"lazy{threads}", args=["--threads", threads])
+        expect(proc.stderr == "", f"the lazy render said:\n{proc.stderr}")
+    inline_image, lazy1, lazy4 = read_images(
+        *(ws.path(f) for f in ("inline.tif", "lazy1.tif", "lazy4.tif")))
+    red, green = mirrored_balls(inline_image)
+    expect(red > 0.9 and green > 0.9, f"the inline balls' reflections are {red}, {green}")
+    for image, what in ((lazy1, "1 thread"), (lazy4, "4 threads")):
+        expect(image.pixels == inline_image.pixels,
+               f"with {what} the lazy archives render otherwise than inline: reflections "
+               f"{mirrored_balls(image)}")
+
+
+
+# A plane in view lit by a point light out of view, with a ball between them that is out of view
+# too: only a shadow ray reaches the ball's archive, and its shadow falls round the origin.
+SHADOWED = """Attribute "light" "shadows" "on"
+LightSource "pointlight" 1 "from" [-8 0 -4] "intensity" [60]
+Surface "matte"
+Polygon "P" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]
+"""
+BALL = "Translate -4 0 -2\nSphere 0.5 -0.5 0.5 360\n"
+
+
+def check_archive_casting_a_shadow_into_view_is_read(ws):
+    write(ws, "ball.rib", BALL)
+    ws.render(frame("inline_shadow.tif", f"{SHADOWED}AttributeBegin\n{BALL}AttributeEnd\n"),
+              "inline_shadow")
+    ws.render(frame("lazy_shadow.tif", SHADOWED +
+                    'Procedural "DelayedReadArchive" ["ball.rib"] [-4.5 -3.5 -0.5 0.5 -2.5 -1.5]\n'),
+              "lazy_shadow")
+    inline_image, lazy = read_images(ws.path("inline_shadow.tif"), ws.path("lazy_shadow.tif"))
+    centre, edge = inline_image.pixels[(64, 64)][0], inline_image.pixels[(64, 4)][0]
+    expect(centre < 1e-6 < edge, f"the inline ball's shadow: centre {centre}, edge {edge}")
+    expect(lazy.pixels == inline_image.pixels, "the lazy ball shadows otherwise than inline: "
+           f"centre {lazy.pixels[(64, 64)][0]}")
+
 def check_hanging_program_is_killed(ws):
     write(ws, "hang.sh", "#!/bin/sh\nread line\nsleep 60\n", executable=True)
     start = time.monotonic()
@@ -167,7 +239,8 @@ def check_bad_trim_curve_is_located(ws):
 
 
 CHECKS = [check_run_program_places_its_sphere, check_nested_procedurals,
-          check_archive_outside_the_frustum_is_not_read, check_hanging_program_is_killed,
+          check_archive_outside_the_frustum_is_not_read, check_archives_seen_in_a_mirror_are_read,
+          check_archive_casting_a_shadow_into_view_is_read, check_hanging_program_is_killed,
           check_trimmed_square_is_a_disc, check_bad_trim_curve_is_located]
 
 

@@ -15,7 +15,11 @@
 * a shadow map that does not exist warns once and falls back to traced shadows (the same image);
 * shadowpoint's six maps (one per axis direction, made from the light's position) shadow a
   floor under four spheres as traced rays do, but along the edges, through four of the maps and
-  across the seam of two, and trace no shadow rays.
+  across the seam of two, and trace no shadow rays;
+* a Blobby's repelling plane (opcode 1003) is the surface of the depth map it names: a sphere
+  cut by a stepped ground rendered into a zfile stays in front of the ground on each side of the
+  step (and on both sides alike once a later frame has rendered the ground flat), and with a map
+  that does not exist it warns (file:line) and is whole (the plane z = 0 is out of its reach).
 
     shadow_map_checks.py --gonio build/bin/gonio"""
 
@@ -419,9 +423,73 @@ def six_maps_shadow_a_point_light_like_rays(ws):
            f"shadow rays per frame {rays}: the mapped frame should trace none")
 
 
+# The depth map of a stepped ground seen along +z by an orthographic camera at the origin: depth
+# 3 for x < 0, 2.85 for x > 0. A unit-matrix ellipsoid at (0, 0, 3) (surface radius 0.4542) plus
+# a repelling plane (A = 1, B = 0.01, C = 1, D = 0) on that map is seen from behind, from
+# z = 6, by an orthographic camera turned round (camera x = −world x, depth = 6 − z).
+GROUND_FRAME = """FrameBegin 1
+Format 64 64 1
+Projection "orthographic"
+Display "ground.z" "zfile" "z"
+WorldBegin
+Polygon "P" [-2 -2 3  0 -2 3  0 2 3  -2 2 3]
+Polygon "P" [0 -2 2.85  2 -2 2.85  2 2 2.85  0 2 2.85]
+WorldEnd
+FrameEnd
+"""
+BLOB_FRAME = """FrameBegin {n}
+Format 64 64 1
+Projection "orthographic"
+Rotate 180 0 1 0
+Translate 0 0 -6
+Display "{name}.exr" "openexr" "z"
+WorldBegin
+Blobby 2 [1001 0 1003 0 16 0 2 0 1] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 3 1  1 0.01 1 0] ["{map}"]
+WorldEnd
+FrameEnd
+"""
+
+
+def nearest_blob_depths(image):
+    """The smallest depth of the blob's pixels left (world x < −0.1) and right (x > 0.1)."""
+    left, right = [], []
+    for (px, _), (z,) in image.pixels.items():
+        world_x = -(-1 + (px + 0.5) / 32)
+        if z < 100:
+            (left if world_x < -0.1 else right if world_x > 0.1 else []).append(z)
+    expect(len(left) > 100 and len(right) > 100, f"{len(left)} and {len(right)} blob pixels")
+    return min(left), min(right)
+
+
+def blobby_plane_repels_from_the_depth_map(ws):
+    # Frame 4 renders the ground again, flat at depth 3: frame 5's Blobby reads the new map.
+    flat = GROUND_FRAME.replace("FrameBegin 1", "FrameBegin 4").replace("2.85", "3")
+    rib = (GROUND_FRAME + BLOB_FRAME.format(n=2, name="cut", map="ground.z") +
+           BLOB_FRAME.format(n=3, name="whole", map="nothere.z") + flat +
+           BLOB_FRAME.format(n=5, name="flat", map="ground.z"))
+    proc = ws.render(rib, "blobplane")
+    warnings = re.findall(r".*warning: .*", proc.stderr)
+    expect(len(warnings) == 1 and re.match(r".*blobplane\.rib:\d+(:\d+)?: warning", warnings[0])
+           and '"nothere.z" is not used' in warnings[0],
+           f"expected one located warning about the missing map, got:\n{proc.stderr}")
+    cut, whole, flat_cut = read_images(*(ws.path(f + ".exr") for f in ("cut", "whole", "flat")))
+    # From behind, the nearest blob points are the cut face, just in front of the ground (the
+    # repulsion −B/h·(1 − ease(h/A)) brings the field under 0.5 within about 0.04 of it).
+    left, right = nearest_blob_depths(cut)
+    expect(6 - 3 < left < 6 - 3 + 0.06, f"left of the step the blob reaches depth {left}")
+    expect(6 - 2.85 < right < 6 - 2.85 + 0.06, f"right of the step the blob reaches depth {right}")
+    left, right = nearest_blob_depths(flat_cut)
+    expect(abs(left - right) < 0.01 and 6 - 3 < right < 6 - 3 + 0.06,
+           f"on the flat ground the blob reaches depths {left}, {right}")
+    # Without its map the plane is z = 0, 3 units away: the sphere is whole, its back at 3.4542.
+    left, right = nearest_blob_depths(whole)
+    expect(abs(left - (6 - 3.4542)) < 0.03 and abs(right - (6 - 3.4542)) < 0.03,
+           f"without the map the blob reaches depths {left}, {right}")
+
+
 CHECKS = [zfile_holds_analytic_depths, two_pass_map_shadows_like_rays,
           default_bias_leaves_a_lit_plane_unshadowed, missing_map_falls_back_to_traced_shadows,
-          six_maps_shadow_a_point_light_like_rays]
+          six_maps_shadow_a_point_light_like_rays, blobby_plane_repels_from_the_depth_map]
 
 if __name__ == "__main__":
     sys.exit(workspace_main(__doc__.splitlines()[0], CHECKS, "gonio-shadowmaps-"))

@@ -1,7 +1,8 @@
 // Procedural and TrimCurve in the scene builder: a DelayedReadArchive whose bound lies outside the
-// viewing frustum is never read, one inside is; a RunProgram procedural's primitives join the
-// frame inside an attribute block of their own; the program is told the bound's raster area;
-// TrimCurve reaches the NuPatches of its attribute block and nothing else.
+// viewing frustum is not read but recorded, by a key that names its place and its world bound,
+// and read when a later reading expands that key, one inside is read; a RunProgram procedural's
+// primitives join the frame inside an attribute block of their own; the program is told the bound's
+// raster area; TrimCurve reaches the NuPatches of its attribute block and nothing else.
 
 #include <gtest/gtest.h>
 
@@ -26,13 +27,14 @@ struct Built {
     std::vector<Frame> frames;
 };
 
-Built BuildFile(const fs::path& path) {
+Built BuildFile(const fs::path& path, const SceneBuilder::LazyExpansion* expansion = nullptr) {
     Built result;
     test::CapturedDiagnostics captured;
     {
         Diagnostics& diagnostics = captured.Get();
         SceneBuilder builder(path.string(), diagnostics,
                              [&](const Frame& frame) { result.frames.push_back(frame); });
+        if (expansion) builder.SetLazyExpansion(0, *expansion);
         ParseRibFile(path.string(), builder, diagnostics);
         builder.Finish(FileLoc{std::make_shared<const std::string>(path.string()), 0, 0});
     }
@@ -74,6 +76,50 @@ TEST(ProceduralBuild, DelayedReadArchiveIsReadOnlyWhenItsBoundIsInView) {
     EXPECT_EQ(std::count(built.messages.begin(), built.messages.end(), '\n'), 1) << built.messages;
     ASSERT_EQ(built.frames.size(), 1u);
     EXPECT_EQ(built.frames[0].shapes.size(), 1u);
+}
+
+TEST(ProceduralBuild, ArchivesOutOfViewAreRecordedByKeyAndReadWhenExpanded) {
+    const fs::path dir = Folder("lazy");
+    Write(dir / "outer.rib",
+          "Procedural \"DelayedReadArchive\" [\"inner.rib\"] [10 11 -1 1 -1 1]\n"
+          "Sphere 0.5 -0.5 0.5 360\n");
+    Write(dir / "inner.rib", "Sphere 1 -1\n");
+    Write(dir / "scene.rib", std::string(kCamera) +
+                                 "WorldBegin\nSphere 0.5 -0.5 0.5 360\nTranslate 3.5 0 0\n"
+                                 "Procedural \"DelayedReadArchive\" [\"outer.rib\"] "
+                                 "[-1 1 -1 1 -1 1]\nWorldEnd\n");
+    auto lazyOf = [](const Built& built) {
+        EXPECT_EQ(built.frames.size(), 1u);
+        return built.frames.empty() ? std::vector<LazyProcedural>{}
+                                    : built.frames[0].lazyProcedurals.All();
+    };
+    // Beside the view (x in [2.5, 4.5] against [-2, 2]): recorded with its bound in world space.
+    const Built first = BuildFile(dir / "scene.rib");
+    EXPECT_EQ(first.messages, "");
+    std::vector<LazyProcedural> lazy = lazyOf(first);
+    ASSERT_EQ(lazy.size(), 1u);
+    EXPECT_EQ(lazy[0].key, "0");
+    EXPECT_EQ(lazy[0].worldBound, Box3f(V3f(2.5f, -1, -1), V3f(4.5f, 1, 1)));
+    // Expanded: its sphere joins the frame, and its own archive, also out of view, is "0/0".
+    SceneBuilder::LazyExpansion expansion;
+    expansion.keys = {"0"};
+    const Built second = BuildFile(dir / "scene.rib", &expansion);
+    EXPECT_EQ(second.frames[0].shapes.size(), 2u);
+    lazy = lazyOf(second);
+    ASSERT_EQ(lazy.size(), 1u);
+    EXPECT_EQ(lazy[0].key, "0/0");
+    EXPECT_EQ(lazy[0].worldBound, Box3f(V3f(13.5f, -1, -1), V3f(14.5f, 1, 1)));
+    // Both expanded, "0/0" for the first time: its error goes to `report` as well.
+    test::CapturedDiagnostics report;
+    expansion.keys = {"0", "0/0"};
+    expansion.firstRead = {"0/0"};
+    expansion.report = &report.Get();
+    const Built third = BuildFile(dir / "scene.rib", &expansion);
+    EXPECT_TRUE(lazyOf(third).empty());
+    const std::string reported = report.Text();
+    EXPECT_EQ(reported.rfind((dir / "inner.rib").string() + ":1:1: error: Sphere expects", 0), 0u)
+        << reported;
+    EXPECT_EQ(std::count(reported.begin(), reported.end(), '\n'), 1) << reported;
 }
 
 TEST(ProceduralBuild, RunProgramPrimitivesComeInAnAttributeBlockOfTheirOwn) {
