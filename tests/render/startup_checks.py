@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Checks that gonio loads OpenImageIO only when a scene needs it, and the viewer's HTTP server
-(cpp-httplib, OpenSSL) only for `gonio view` (issue 21): the executable
-does not link it; a render without textures writing TIFF, PNG and OpenEXR never loads it (the
-dynamic loader's own record, LD_DEBUG=files, of every object the process opened, dlopen
-included); a textured scene loads the plugin and renders the texture's colour; and without the
-plugin, what needed it says so while the built-in formats still work.
+(cpp-httplib, OpenSSL) only for `gonio view` (issue 21): the executable does not link it; a
+render without textures writing TIFF, PNG and OpenEXR never loads it (the dynamic loader's own
+record, LD_DEBUG=files, of every object the process opened, dlopen included); an empty frame
+does not start oneTBB; a textured scene loads the plugin and renders the texture's colour; and
+without the plugin, what needed it says so while the built-in formats still work.
 
     startup_checks.py --gonio build/bin/gonio"""
 
@@ -82,6 +82,21 @@ def check_render_without_textures_loads_no_oiio(ws):
                f"pixel (4, 3) is {got}, expected 0.25 0.5 0.75")
 
 
+def check_empty_frame_starts_no_tbb(ws):
+    """An empty 1x1 frame (the start-up benchmark's) makes no Embree device and renders its one
+    tile on the main thread, so oneTBB never opens libtbbmalloc (its first task, a scene commit
+    or a thread-local table would); the pixel is empty, as every ray misses."""
+    rib = 'Format 1 1 1\nDisplay "empty.tif" "tiff" "rgba"\nWorldBegin\nWorldEnd\n'
+    proc, loaded = render_traced(ws, rib, "empty")
+    expect(proc.returncode == 0, f"the render failed:\n{proc.stderr[-2000:]}")
+    expect(any("libtbb.so" in name for name in loaded),
+           f"LD_DEBUG=files did not record libtbb itself: the check would see nothing: {loaded}")
+    tbbmalloc = [name for name in loaded if "tbbmalloc" in name]
+    expect(not tbbmalloc, f"an empty frame loaded {tbbmalloc}")
+    (image,) = read_images(ws.path("empty.tif"))
+    expect(image.pixels[(0, 0)] == [0, 0, 0, 0], f"the empty pixel is {image.pixels[(0, 0)]}")
+
+
 def check_texture_loads_the_plugin(ws):
     subprocess.run(["oiiotool", "--pattern", "constant:color=0.125,0.25,0.625", "16x16", "3",
                     "-d", "float", "-o", ws.path("tex.tif")], check=True, capture_output=True)
@@ -114,7 +129,7 @@ def check_missing_plugin_is_a_clear_error(ws):
 
 
 CHECKS = [check_executable_does_not_link_oiio, check_only_view_loads_the_http_server,
-          check_render_without_textures_loads_no_oiio,
+          check_render_without_textures_loads_no_oiio, check_empty_frame_starts_no_tbb,
           check_texture_loads_the_plugin, check_missing_plugin_is_a_clear_error]
 
 
