@@ -235,8 +235,10 @@ void TileRenderer::TraceAndShade() {
             SampleState& sample = samples_[size_t(i)];
             CameraRay& ray = sample.ray;
             hit->tnear = ray.tnear;
+            // Only the hits ShadeGroup shades need the rest (FinishEvaluate): with ShadingRate
+            // sharing, about one in xsamples·ysamples.
             if (!NextVisibleHit(scene_, ray.org, ray.dir, ray.time, ray.tfar, &ray.tnear, sp,
-                                &hit->t, &cameraRays_))
+                                &hit->t, &cameraRays_, HitEvaluation::kGeometry))
                 return false;
             if (std::isinf(sample.depth)) sample.depth = hit->t;
             return true;
@@ -298,6 +300,7 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         const int k = members[size_t(shadedMember)];
         const TransparentLayers::Hit& hit = layers_.HitAt(k);
         const SampleState& sample = samples_[size_t(hit.ray)];
+        scene_.FinishEvaluate(&layers_.PointAt(k));
         batch.points.push_back(&layers_.PointAt(k));
         batch.incident.push_back(sample.ray.dir * hit.t);
         batch.depth.push_back(hit.t);
