@@ -1,7 +1,6 @@
 #include "renderer/frame/frame_renderer.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include "base/progress.h"
 #include "base/random.h"
 #include "base/system_memory.h"
+#include "renderer/frame/per_thread.h"
 #include "renderer/frame/shading_points.h"
 #include "renderer/image/film.h"
 #include "renderer/image/image_writer.h"
@@ -235,8 +235,10 @@ void TileRenderer::TraceAndShade() {
             SampleState& sample = samples_[size_t(i)];
             CameraRay& ray = sample.ray;
             hit->tnear = ray.tnear;
+            // Only the hits ShadeGroup shades need the rest (FinishEvaluate): with ShadingRate
+            // sharing, about one in xsamples·ysamples.
             if (!NextVisibleHit(scene_, ray.org, ray.dir, ray.time, ray.tfar, &ray.tnear, sp,
-                                &hit->t, &cameraRays_))
+                                &hit->t, &cameraRays_, HitEvaluation::kGeometry))
                 return false;
             if (std::isinf(sample.depth)) sample.depth = hit->t;
             return true;
@@ -298,6 +300,7 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         const int k = members[size_t(shadedMember)];
         const TransparentLayers::Hit& hit = layers_.HitAt(k);
         const SampleState& sample = samples_[size_t(hit.ray)];
+        scene_.FinishEvaluate(&layers_.PointAt(k));
         batch.points.push_back(&layers_.PointAt(k));
         batch.incident.push_back(sample.ray.dir * hit.t);
         batch.depth.push_back(hit.t);
@@ -485,27 +488,40 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
     // frame is not written.
     const int errorsBefore = diagnostics.ErrorCount();
     Progress progress("render", uint64_t(width) * height, settings.progress);
-    tbb::enumerable_thread_specific<std::unique_ptr<ShadingWorker>> workers(
-        [&] { return shading->MakeWorker(); });
-    tbb::enumerable_thread_specific<std::unique_ptr<PathWorker>> pathWorkers(
-        [&] { return paths ? paths->MakeWorker() : nullptr; });
-    tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
+    // What each thread keeps from tile to tile, made at its first tile (the renderer, which
+    // uses the workers, is destroyed first).
+    struct ThreadState {
+        std::unique_ptr<ShadingWorker> worker;
+        std::unique_ptr<PathWorker> paths;
+        std::unique_ptr<TileRenderer> renderer;
+    };
+    PerThread<ThreadState> threads;
     const SampleGenerator generator(settings.seed, xsamples, ysamples, options, camera,
                                     OutputFloats(outputs));
-    tbb::parallel_for(tbb::blocked_range<int>(0, film.TileCount(), 1), [&](const auto& tiles) {
-        for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
-            const Imath::Box2i pixels = film.TilePixels(tile);
-            auto& renderer = renderers.local();
-            if (!renderer)
-                renderer = std::make_unique<TileRenderer>(scene, camera, *workers.local(), options,
-                                                          outputs, pathWorkers.local().get());
-            FilmTile filmTile = film.StartTile(tile);
-            renderer->Render(pixels, generator, &filmTile);
-            film.StoreTile(std::move(filmTile));
-            progress.Advance(uint64_t(pixels.max.x - pixels.min.x + 1) *
-                             (pixels.max.y - pixels.min.y + 1));
+    const auto renderTile = [&](int tile) {
+        const Imath::Box2i pixels = film.TilePixels(tile);
+        ThreadState& thread = threads.Local();
+        if (!thread.renderer) {
+            thread.worker = shading->MakeWorker();
+            if (paths) thread.paths = paths->MakeWorker();
+            thread.renderer = std::make_unique<TileRenderer>(scene, camera, *thread.worker, options,
+                                                             outputs, thread.paths.get());
         }
-    });
+        TileRenderer* renderer = thread.renderer.get();
+        FilmTile filmTile = film.StartTile(tile);
+        renderer->Render(pixels, generator, &filmTile);
+        film.StoreTile(std::move(filmTile));
+        progress.Advance(uint64_t(pixels.max.x - pixels.min.x + 1) *
+                         (pixels.max.y - pixels.min.y + 1));
+    };
+    // A frame of one tile (a tiny or empty one) is rendered on this thread: a parallel loop
+    // would start oneTBB's workers (threads, its allocator) for nothing they could share.
+    if (film.TileCount() == 1)
+        renderTile(0);
+    else
+        tbb::parallel_for(tbb::blocked_range<int>(0, film.TileCount(), 1), [&](const auto& tiles) {
+            for (int tile = tiles.begin(); tile != tiles.end(); ++tile) renderTile(tile);
+        });
     progress.Done();
     shading->FinishFrame(diagnostics);  // point clouds the shaders baked, for later frames
     if (diagnostics.ErrorCount() > errorsBefore) {
@@ -531,12 +547,11 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
         // Each thread's renderer and workers counted their own rays; the sum does not depend
         // on which thread rendered which tile.
         stats->rays = RayCounts{};
-        for (const auto& renderer : renderers)
-            if (renderer) stats->rays.camera += renderer->CameraRays();
-        for (const auto& worker : workers)
-            if (worker) stats->rays += worker->Rays();
-        for (const auto& worker : pathWorkers)
-            if (worker) stats->rays.path += worker->RaysTraced();
+        threads.ForEach([&](const ThreadState& thread) {
+            stats->rays.camera += thread.renderer->CameraRays();
+            stats->rays += thread.worker->Rays();
+            if (thread.paths) stats->rays.path += thread.paths->RaysTraced();
+        });
         stats->width = spec.WindowWidth();
         stats->height = spec.WindowHeight();
     }

@@ -18,6 +18,14 @@ int FilterMargin(float radius) { return std::max(0, int(std::ceil(0.5f + radius)
 // cancelled (negative lobes), and dividing by their sum would only amplify noise.
 constexpr float kCancelledWeightFraction = 1e-3f;
 
+// One sample's share of one pixel (FilmTile::sums_): sum[0] += w, sum[1] += |w| and
+// sum[2 + c] += w·values[c], the innermost loop of every render.
+void AddWeighted(float w, const double* __restrict values, int channels, double* __restrict sum) {
+    sum[0] += w;
+    sum[1] += std::fabs(w);
+    for (int c = 0; c < channels; ++c) sum[2 + c] += double(w) * values[c];
+}
+
 }  // namespace
 
 void ComposeCropWindow(const float window[4], const float part[4], float out[4]) {
@@ -178,14 +186,15 @@ FilmTile::FilmTile(const Film& film, int index)
       index_(index),
       pixels_(film.TilePixels(index)),
       footprint_(film.Footprint(pixels_)),
-      channels_(film.Spec().channels) {
+      channels_(film.Spec().channels),
+      columns_(size_t(2 * film.xmargin_ + 1)),
+      values_(size_t(channels_)) {
     // A tile wholly in the margin beyond a corner may reach no window pixel.
     const size_t pixels = footprint_.isEmpty()
                               ? 0
                               : size_t(footprint_.max.x - footprint_.min.x + 1) *
                                     size_t(footprint_.max.y - footprint_.min.y + 1);
-    sums_.assign(pixels * channels_, 0.0);
-    weights_.assign(pixels * 2, 0.0);
+    sums_.assign(pixels * Stride(), 0.0);
     if (film.keepNearest_) {
         nearest_.assign(pixels * (1 + channels_), 0.0f);
         for (size_t i = 0; i < pixels; ++i)
@@ -194,6 +203,10 @@ FilmTile::FilmTile(const Film& film, int index)
     depth_.assign(pixels, std::numeric_limits<float>::infinity());
 }
 
+// Each camera sample comes here, so the loops are kept lean: the columns in reach and their
+// weights are found once per sample, columns of weight 0 are skipped where they add nothing,
+// and the values are made doubles once. The sums are the same, added in the same order, as
+// weighting every pixel of the margin in turn.
 void FilmTile::AddSample(int px, int py, float x, float y, const float* values) {
     if (!film_ || !pixels_.intersects(Imath::V2i(px, py))) return;
     const int depthChannel = film_->Spec().depthChannel;
@@ -208,43 +221,45 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
     const int qymax = std::min(footprint_.max.y, py + film_->ymargin_);
     if (qxmin > qxmax || qymin > qymax) return;
     // The sample counts for pixel q when -radius <= x - (q + 0.5) < radius; a separable filter's
-    // weight is the product of the column's and the row's.
+    // weight is the product of the column's and the row's, 0 wherever the column's is.
     const float xr = filter.XRadius(), yr = filter.YRadius();
-    xOffsets_.clear(), xWeights_.clear();
+    const bool separable = filter.Separable(), keepNearest = !nearest_.empty();
+    int columns = 0;
     for (int qx = qxmin; qx <= qxmax; ++qx) {
         const float dx = x - (qx + 0.5f);
-        xOffsets_.push_back(dx);
-        xWeights_.push_back(dx < -xr || dx >= xr ? 0.0f : film_->xWeight_(dx));
+        if (dx < -xr || dx >= xr) continue;
+        const float weight = film_->xWeight_(dx);
+        if (separable && weight == 0.0f && !keepNearest) continue;
+        columns_[size_t(columns++)] = {qx - footprint_.min.x, dx, weight};
     }
+    const int channels = channels_;
+    for (int c = 0; c < channels; ++c) values_[size_t(c)] = values[c];
+    // Locals, so that the stores into the sums do not make the compiler reload the members.
+    const Column* const column = columns_.data();
+    const double* const sampleValues = values_.data();
+    double* const sums = sums_.data();
+    const size_t stride = Stride(), width = size_t(footprint_.max.x - footprint_.min.x + 1);
     for (int qy = qymin; qy <= qymax; ++qy) {
         const float dy = y - (qy + 0.5f);
         if (dy < -yr || dy >= yr) continue;
         const float yWeight = film_->yWeight_(dy);
-        for (int qx = qxmin; qx <= qxmax; ++qx) {
-            const int k = qx - qxmin;
-            const float dx = xOffsets_[size_t(k)];
-            if (dx < -xr || dx >= xr) continue;
-            const float w =
-                filter.Separable() ? xWeights_[size_t(k)] * yWeight : filter.Evaluate(dx, dy);
-            AddToPixel(qx, qy, dx * dx + dy * dy, w, values);
+        const size_t row = size_t(qy - footprint_.min.y) * width;
+        for (int k = 0; k < columns; ++k) {
+            const size_t pixel = row + size_t(column[k].offset);
+            const float dx = column[k].dx;
+            if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
+            const float w = separable ? column[k].weight * yWeight : filter.Evaluate(dx, dy);
+            if (w != 0.0f) AddWeighted(w, sampleValues, channels, &sums[pixel * stride]);
         }
     }
 }
 
-void FilmTile::AddToPixel(int qx, int qy, float distance, float w, const float* values) {
-    const size_t pixel = PixelIndex(qx, qy);
-    if (!nearest_.empty()) {
-        float* nearest = &nearest_[pixel * (1 + channels_)];
-        if (distance < nearest[0]) {
-            nearest[0] = distance;
-            std::copy(values, values + channels_, nearest + 1);
-        }
+void FilmTile::KeepNearest(size_t pixel, float distance, const float* values) {
+    float* nearest = &nearest_[pixel * (1 + channels_)];
+    if (distance < nearest[0]) {
+        nearest[0] = distance;
+        std::copy(values, values + channels_, nearest + 1);
     }
-    if (w == 0.0f) return;
-    weights_[2 * pixel] += w;
-    weights_[2 * pixel + 1] += std::fabs(w);
-    double* sum = &sums_[pixel * channels_];
-    for (int c = 0; c < channels_; ++c) sum[c] += double(w) * values[c];
 }
 
 void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) const {
@@ -272,9 +287,10 @@ void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) co
                 nearest = tileNearest + 1;
             }
             depth = std::min(depth, tile.depth_[pixel]);
-            weightSum += tile.weights_[2 * pixel];
-            absWeightSum += tile.weights_[2 * pixel + 1];
-            for (int c = 0; c < channels; ++c) sum[c] += tile.sums_[pixel * channels + c];
+            const double* sums = &tile.sums_[pixel * tile.Stride()];
+            weightSum += sums[0];
+            absWeightSum += sums[1];
+            for (int c = 0; c < channels; ++c) sum[c] += sums[2 + c];
         }
     }
     const bool cancelled =

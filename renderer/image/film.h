@@ -170,22 +170,31 @@ class FilmTile {
         return size_t(py - footprint_.min.y) * size_t(footprint_.max.x - footprint_.min.x + 1) +
                size_t(px - footprint_.min.x);
     }
-    // Adds a sample at squared distance `distance` from the pixel's centre with weight w.
-    void AddToPixel(int qx, int qy, float distance, float w, const float* values);
+    // Makes a sample at squared distance `distance` from the pixel's centre its nearest one, if
+    // it is nearer than the one kept.
+    void KeepNearest(size_t pixel, float distance, const float* values);
 
     const Film* film_ = nullptr;
     int index_ = -1;
     Imath::Box2i pixels_;     // whose samples it takes
     Imath::Box2i footprint_;  // the window pixels they can reach
     int channels_ = 0;
-    std::vector<double> sums_;     // channels_ per footprint pixel
-    std::vector<double> weights_;  // sum of weights, sum of |weights|: 2 per pixel
+    // Per footprint pixel, side by side (one cache line or two for the standard channels): the
+    // sum of weights, the sum of |weights|, then the weighted sums of the channels_ channels.
+    std::vector<double> sums_;
     // Distance², then the channels: 1 + channels_ per pixel; empty unless the film keeps them.
     std::vector<float> nearest_;
-    std::vector<float> depth_;  // per footprint pixel
-    // Scratch for AddSample: a sample's offsets from, and weights for, the columns of pixels
-    // px - xmargin .. px + xmargin.
-    std::vector<float> xOffsets_, xWeights_;
+    std::vector<float> depth_;                               // per footprint pixel
+    size_t Stride() const { return 2 + size_t(channels_); }  // doubles a pixel in sums_
+
+    // Scratch for AddSample, sized once: the columns of pixels px - xmargin .. px + xmargin that
+    // a sample reaches, with its offset from and weight for each, and its values as doubles.
+    struct Column {
+        int offset;  // of the column from footprint_.min.x
+        float dx, weight;
+    };
+    std::vector<Column> columns_;
+    std::vector<double> values_;
 };
 
 }  // namespace gonio

@@ -30,12 +30,17 @@ RayScene::RayScene(const Frame& frame, Diagnostics& diagnostics, Traversal trave
     Impl& s = *impl_;
     s.sceneFlags = traversal == Traversal::kRobust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
     s.colorComponents = frame.options.colorComponents;
+    s.shutterOpen = frame.options.shutterOpen;
+    s.shutterClose = std::max(frame.options.shutterClose, frame.options.shutterOpen);
+    // A frame with nothing in it (start-up benchmarks, a scene still being written) needs no
+    // Embree: its device and an empty scene's commit start oneTBB's workers and allocator, the
+    // larger part of such a render's time. Every ray then misses (Trace, Occluded).
+    if (frame.shapes.empty() && frame.instances.empty() && frame.lazyProcedurals.All().empty())
+        return;
     s.device = rtcNewDevice(nullptr);
     rtcSetDeviceErrorFunction(s.device, ReportEmbreeError, &diagnostics);
     s.top.scene = rtcNewScene(s.device);
     rtcSetSceneFlags(s.top.scene, s.sceneFlags);
-    s.shutterOpen = frame.options.shutterOpen;
-    s.shutterClose = std::max(frame.options.shutterClose, frame.options.shutterOpen);
     if (!frame.solids.empty()) {
         s.solids.scene = rtcNewScene(s.device);
         rtcSetSceneFlags(s.solids.scene, s.sceneFlags);

@@ -72,6 +72,14 @@ class RayScene {
     // The same into an existing point, reusing its colour storage (no allocation in loops).
     void Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
                   SurfacePoint* sp) const;
+    // Evaluate in two parts, for camera hits that may take another hit's shading (ShadingRate):
+    // EvaluateGeometry fills P, N, Ng, u, v, shape, record, attributes, the stencils and
+    // worldFromObject (what visibility and sharing look at), leaving dPdu and dPdv in object
+    // space; FinishEvaluate then makes those world space and adds Cs, Os, s and t, for the hits
+    // that are shaded. The two give exactly what Evaluate gives.
+    void EvaluateGeometry(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
+                          SurfacePoint* sp) const;
+    void FinishEvaluate(SurfacePoint* sp) const;
 
     // The point, normals and colour at a hit, for loops that trace many paths: flat triangle
     // meshes take them from Embree's own normal and quadrics from their implicit equation

@@ -165,6 +165,12 @@ SurfacePoint RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hi
 
 void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
                         SurfacePoint* out) const {
+    EvaluateGeometry(org, dir, hit, out);
+    FinishEvaluate(out);
+}
+
+void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hit,
+                                SurfacePoint* out) const {
     const Impl& s = *impl_;
     const Impl::ResolvedHit resolved = s.Resolve(hit);
     const GeometryRecord* record = resolved.record;
@@ -186,8 +192,8 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     SurfacePoint& sp = *out;
     sp.shape = record->shape;
     sp.P = worldP;
-    sp.dPdu = TransformVector(worldFromObject, object.geometry.dPdu);
-    sp.dPdv = TransformVector(worldFromObject, object.geometry.dPdv);
+    sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
+    sp.dPdv = object.geometry.dPdv;
     const float flip = record->shape->flipNormals != hit.flipNormal ? -1.f : 1.f;
     sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
     // N is Ng unless the primitive gives normals.
@@ -201,8 +207,14 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     sp.primID = hit.primID;
     sp.hitU = hit.u, sp.hitV = hit.v;
     sp.stencils = object.stencils;
-
     sp.attributes = resolved.attributes;
+}
+
+void RayScene::FinishEvaluate(SurfacePoint* out) const {
+    SurfacePoint& sp = *out;
+    const GeometryRecord* record = sp.record;
+    sp.dPdu = TransformVector(sp.worldFromObject, sp.dPdu);
+    sp.dPdv = TransformVector(sp.worldFromObject, sp.dPdv);
     const Attributes& attributes = *sp.attributes;
     sp.Cs = attributes.color;
     sp.Os = attributes.opacity;

@@ -15,6 +15,7 @@ using Imath::V3f;
 
 bool RayScene::Impl::Trace(const SceneLevel& level, const V3f& org, const V3f& dir, float tnear,
                            float tfar, float time, RayHit* hit) const {
+    if (!level.scene) return false;  // an empty frame's
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
@@ -86,6 +87,7 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
 }
 
 bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {
+    if (!impl_->top.scene) return false;  // an empty frame's
     // The whole segment, not only up to an occluder: occlusion does not say which is first.
     if (impl_->lazyScene) impl_->MarkLazyProcedurals(org, dir, tnear, tfar, time);
     RTCIntersectContext context;

@@ -5,13 +5,17 @@
 namespace gonio {
 
 bool NextVisibleHit(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir, float time,
-                    float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays) {
+                    float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays,
+                    HitEvaluation evaluation) {
     while (true) {
         RayHit hit;
         ++*rays;
         if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
         *tnear = ContinuePast(hit.t);
-        scene.Evaluate(org, dir, hit, sp);
+        if (evaluation == HitEvaluation::kFull)
+            scene.Evaluate(org, dir, hit, sp);
+        else
+            scene.EvaluateGeometry(org, dir, hit, sp);
         *t = hit.t;
         if (sp->attributes->twoSided || sp->Ng.dot(dir) <= 0) return true;
     }

@@ -27,10 +27,15 @@ constexpr float kNegligibleTransmittance = 1e-4f;
 // that it misses the surface it left at any distance.
 inline float ContinuePast(float t) { return t + std::max(1e-5f, 1e-5f * t); }
 
+// How much of a hit NextVisibleHit evaluates: all of it, or its geometry only
+// (RayScene::EvaluateGeometry; FinishEvaluate completes it), for hits that may not be shaded.
+enum class HitEvaluation { kFull, kGeometry };
+
 // The ray's next hit beyond *tnear (and before tfar) that faces it or is two-sided, evaluated
 // into *sp, its distance in *t; *tnear moves past every hit tried. Counts each query in *rays.
 bool NextVisibleHit(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir, float time,
-                    float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays);
+                    float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays,
+                    HitEvaluation evaluation = HitEvaluation::kFull);
 
 // One layer composited front to back over n components: colour += T·Ci (not for a matte
 // surface, which hides what is behind it and adds nothing, RISpec §4.2.5), then

@@ -104,6 +104,40 @@ INSTANTIATE_TEST_SUITE_P(Film, ConstantField,
                              return name;
                          });
 
+// Every window pixel is the plain weighted mean of the samples within the filter's reach, each
+// weighted by the film's tabulated axes (or the disk's own weight): a reference that weighs every
+// sample against every pixel, so that the splat's shortcuts (the columns it skips, the rows it
+// stops at) can neither drop a sample nor count one twice.
+TEST_P(ConstantField, PixelsAreThePlainWeightedMeanOfTheirSamples) {
+    const PixelFilter filter = MakeFilter(GetParam(), 3, 2.5f);
+    const FilmSpec spec = SmallSpec(11, 7, 3, 2, 5);
+    Film film(spec, filter);
+    const std::vector<TestSample> samples = FieldSamples(film, [](int px, int py, int s, float* v) {
+        for (int c = 0; c < 5; ++c) v[c] = float((px * 13 + py * 7 + s * 3 + c * 5) % 17) / 8;
+    });
+    Splat(film, samples);
+    const Image image = film.Resolve();
+    const FilterTable xTable(filter.XRadius(), [&](float d) { return filter.XWeight(d); });
+    const FilterTable yTable(filter.YRadius(), [&](float d) { return filter.YWeight(d); });
+    const float xr = filter.XRadius(), yr = filter.YRadius();
+    for (int py = spec.ymin; py <= spec.ymax; ++py)
+        for (int px = spec.xmin; px <= spec.xmax; ++px) {
+            double sum[5] = {}, weights = 0, absWeights = 0;
+            for (const TestSample& s : samples) {
+                const float dx = s.x - (px + 0.5f), dy = s.y - (py + 0.5f);
+                if (dx < -xr || dx >= xr || dy < -yr || dy >= yr) continue;
+                const float w =
+                    filter.Separable() ? xTable(dx) * yTable(dy) : filter.Evaluate(dx, dy);
+                weights += w, absWeights += std::fabs(w);
+                for (int c = 0; c < 5; ++c) sum[c] += double(w) * s.values[size_t(c)];
+            }
+            if (std::fabs(weights) < 1e-3 * absWeights) continue;  // the nearest-sample fallback
+            for (int c = 0; c < 4; ++c)  // channel 4 is depth, filtered by "min"
+                ASSERT_NEAR(image.At(px, py)[c], sum[c] / weights, 1e-5)
+                    << GetParam() << " pixel " << px << "," << py << " channel " << c;
+        }
+}
+
 // One sample per pixel at its centre: a single bright sample reaches each pixel with the filter's
 // weight at their offset, divided by the (here equal for every pixel) sum of weights.
 TEST(Film, SingleSampleSpreadsAsTheFilterSays) {

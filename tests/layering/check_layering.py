@@ -20,7 +20,8 @@ import sys
 FOLDERS = [
     "base", "renderer/rib", "renderer/geometry", "renderer/scene", "renderer/raytrace",
     "renderer/image", "renderer/shading", "renderer/frame", "renderer/photon", "renderer/pathtrace",
-    "shaderlang", "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio", "farm", "cli",
+    "shaderlang", "brdfsim", "spectral", "viewer", "imageio/oiio", "imageio/exr", "imageio", "farm",
+    "cli",
 ]
 # External libraries only some folders may see: the build keeps them private to those.
 GUARDED = ["embree3", "OpenImageIO", "OpenEXR", "tiffio.h", "png.h", "Eigen", "httplib.h",

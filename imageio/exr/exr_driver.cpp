@@ -1,6 +1,7 @@
 // OpenEXR through the OpenEXR library, written as OpenImageIO 2.4's OpenEXR writer writes a
 // scanline image: zip (level 4) by default, increasing Y, the data and display windows, the
-// date as capDate, other string metadata as string attributes under OpenEXR's names.
+// date as capDate, other string metadata as string attributes under OpenEXR's names. Built as
+// the plugin libgonio_exr.so (imageio/exr_plugin.h), whose entry point returns WriteExrFile.
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "imageio/builtin_drivers.h"
+#include "imageio/exr_plugin.h"
 
 namespace gonio {
 
@@ -117,3 +119,7 @@ std::string WriteExrFile(const std::string& path, const ImageFileSpec& spec,
 }
 
 }  // namespace gonio
+
+extern "C" __attribute__((visibility("default"))) gonio::ExrWriter GonioExrWriter() {
+    return &gonio::WriteExrFile;
+}
