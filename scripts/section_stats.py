@@ -4,6 +4,7 @@
     section_stats.py rms A.txt B.txt   # relative RMS between two runs of the same cuts
     section_stats.py ratios T.txt      # backscatter, side and forward values of each Δφ cut
     section_stats.py growth T.txt      # f at the lowest viewer over f at the highest, per light
+    section_stats.py compare T.txt     # two grids' curves of the same cuts: level and shape
 
 The tables are what `gonio brdf section --vary phi-out --from 0 --to 180` prints: a header line
 naming each curve as "[grid cut]:component", then one row per sample. For two seeds of the same
@@ -11,7 +12,10 @@ cut, the relative RMS is sqrt(mean((a - b)^2)) / mean((a + b) / 2) over the samp
 seed-to-seed spread as a fraction of the curve's level (one seed's error is that over sqrt 2).
 `ratios` reads f at Δφ = 0 (back towards the light), 90 (the side) and 180 (forward); `growth`
 divides, for each θ_in, the curve of the largest θ_out by that of the smallest at those Δφ (the
-thesis's "higher reflectance at lower outgoing direction").
+thesis's "higher reflectance at lower outgoing direction"). `compare` reads a table of two grids
+with the same k cuts (the first grid's k curves, then the second's) and prints, per cut, the
+ratio of the second's mean level to the first's, the range of their ratio over the samples, and
+the largest relative difference of the two shapes (each curve divided by its mean level).
 """
 
 import math
@@ -66,6 +70,18 @@ def print_growth(names, curves):
         print("%-8g %-10s %9.2f %9.2f %9.2f" % (theta_in, "%g/%g" % (high, low), *ratios))
 
 
+def print_comparison(names, curves):
+    k = len(curves) // 2
+    print("%-16s %7s %13s %7s" % ("cut", "level", "ratio range", "shape"))
+    for name, a, b in zip(names, curves[:k], curves[k:]):
+        fa, fb = [f for _, f in a], [f for _, f in b]
+        mean_a, mean_b = sum(fa) / len(fa), sum(fb) / len(fb)
+        ratios = [y / x for x, y in zip(fa, fb)]
+        shape = max(abs(y / mean_b - x / mean_a) / (x / mean_a) for x, y in zip(fa, fb))
+        print("%-16s %7.3f %6.2f-%-6.2f %6.0f%%" % (cut_label(name), mean_b / mean_a, min(ratios),
+                                                   max(ratios), 100 * shape))
+
+
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == "rms":
         names, a = read_table(sys.argv[2])
@@ -82,6 +98,8 @@ def main():
                                                          back / side, forward / side))
     elif len(sys.argv) == 3 and sys.argv[1] == "growth":
         print_growth(*read_table(sys.argv[2]))
+    elif len(sys.argv) == 3 and sys.argv[1] == "compare":
+        print_comparison(*read_table(sys.argv[2]))
     else:
         sys.exit(__doc__)
 
