@@ -13,7 +13,10 @@ Presets (--model):
   grass   the improved model (fig. 5.15): 0.008 x 0.03 blades, alpha 0..360, beta 0..85
   mowed   the improved model with alpha in -10..10: all blades lean towards +y (fig. 5.20)
 Blades get a normalised-Phong micro BRDF (--kd, --ks, --exponent; default 0.5, 0.5, 10, the
-plastic shader's defaults) and a green colour; the ground is matte soil (Kd 0.3).
+plastic shader's defaults) and a green colour; the ground is matte soil (Kd 0.3). With --leaf
+they get the leaf optics of docs/brdflight.md instead (a GGX cuticle of index 1.45, roughness
+0.3, over diffuse reflection and transmission: the green blade of that page, whose diffuse
+reflection plus transmission, 0.11 0.26 0.06, is about the Phong blade's kd * Cs).
 
 The isotropic models ask for "averageazimuth": the light comes from every azimuth and photons
 are stored relative to it, so the map is the isotropic BRDF of the patch rather than one azimuth
@@ -37,6 +40,8 @@ PRESETS = {
 }
 BLADE_COLOUR = (0.25, 0.55, 0.15)
 SOIL_COLOUR = (0.35, 0.25, 0.15)
+LEAF_REFLECTANCE = (0.06, 0.14, 0.04)
+LEAF_TRANSMITTANCE = (0.05, 0.12, 0.02)
 
 
 def blade(x, y, alpha, beta, width, height):
@@ -50,6 +55,16 @@ def blade(x, y, alpha, beta, width, height):
     top1 = tuple(base1[i] + up[i] for i in range(3))
     top0 = tuple(base0[i] + up[i] for i in range(3))
     return [base0, base1, top1, top0]
+
+
+def blade_optics(args):
+    """The blades' BRDFLight attribute: normalised Phong, or with --leaf the leaf optics."""
+    if args.leaf:
+        return ('  Attribute "brdflight" "string model" "leaf" "float eta" 1.45 '
+                '"float roughness" 0.3\n    "color reflectance" [%g %g %g] '
+                '"color transmittance" [%g %g %g]\n' % (*LEAF_REFLECTANCE, *LEAF_TRANSMITTANCE))
+    return ('  Attribute "brdflight" "float kd" %g "float ks" %g "float exponent" %g\n'
+            % (args.kd, args.ks, args.exponent))
 
 
 def periodic_copies(corners, tile):
@@ -82,6 +97,7 @@ def main():
     parser.add_argument("--area", type=float, default=0.1)
     parser.add_argument("--seed", type=int, default=1996)
     parser.add_argument("--periodic", action="store_true")
+    parser.add_argument("--leaf", action="store_true", help="leaf optics instead of Phong blades")
     parser.add_argument("--texturename", default="grass.pm")
     parser.add_argument("--comment", default="", help="an extra comment line")
     args = parser.parse_args()
@@ -128,8 +144,7 @@ def main():
     out.write("AttributeBegin  # the blades\n")
     out.write('  Color [%g %g %g]\n' % BLADE_COLOUR)
     out.write('  Surface "plastic" "Kd" %g "Ks" %g\n' % (args.kd, args.ks))
-    out.write('  Attribute "brdflight" "float kd" %g "float ks" %g "float exponent" %g\n'
-              % (args.kd, args.ks, args.exponent))
+    out.write(blade_optics(args))
     out.write("  PointsPolygons [%s]\n" % " ".join("4" for _ in polygons))
     out.write("    [%s]\n" % " ".join(str(k) for k in range(4 * len(polygons))))
     out.write('    "P" [\n')

@@ -12,3 +12,9 @@ python3 generators/grass.py --model grass --kd 0.3 --ks 0.7 --texturename grass_
     --comment "fig. 5.19 (b): micro BRDF kd 0.3, ks 0.7" > grass_microbrdf_b.rib
 python3 generators/grass.py --model grass --periodic --texturename grass_periodic.pm \
     --comment "periodic tile: the same blades wrapped at the tile edges" > grass_periodic.rib
+python3 generators/grass.py --model v1 --leaf --texturename grass_v1_leaf.pm \
+    --comment "blades with leaf optics (docs/brdflight.md)" > grass_v1_leaf.rib
+python3 generators/grass.py --model grass --leaf --texturename grass_leaf.pm \
+    --comment "blades with leaf optics (docs/brdflight.md)" > grass_leaf.rib
+python3 generators/grass.py --model mowed --leaf --texturename grass_mowed_leaf.pm \
+    --comment "blades with leaf optics (docs/brdflight.md)" > grass_mowed_leaf.rib
