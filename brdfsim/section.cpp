@@ -58,7 +58,7 @@ std::string SectionCut::Label() const {
         std::snprintf(text, sizeof text, "%s%s=%g°", label.empty() ? "" : " ", a.name, a.value);
         label += text;
     }
-    return label;
+    return reciprocal ? label + " reciprocal" : label;
 }
 
 std::string SectionCut::AxisLabel() const {
@@ -113,7 +113,11 @@ Section ComputeSection(const Brdf& brdf, const SectionCut& cut) {
         double ti, pi, to, po;
         CutAngles(cut, x, &ti, &pi, &to, &po);
         section.x[i] = x;
-        brdf.EvalAngles(ti, pi, to, po, section.f[i].data());
+        if (cut.reciprocal && to > ti) {
+            brdf.EvalAngles(to, po, ti, pi, section.f[i].data());
+        } else {
+            brdf.EvalAngles(ti, pi, to, po, section.f[i].data());
+        }
     });
     return section;
 }

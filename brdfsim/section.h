@@ -23,6 +23,11 @@ struct SectionCut {
     double from = -89, to = 89;
     int samples = 100;
     bool relativePhi = false;  // φ_out counts from φ_in (thesis figs. 5.16, 5.21: Δφ)
+    // Where θ_out > θ_in, evaluate f(ω'→ω) as f(ω→ω') (Helmholtz reciprocity), so that the
+    // direction photons leave by is the less grazing one: the splat estimate divides each photon
+    // leaving near ω by cos θ_out and does not converge at θ_out = 80° (docs/gallery.md), while
+    // on the incoming side it averages over simulated incidences.
+    bool reciprocal = false;
 
     // "θi=45 φi=0 φo=0" without the varying angle, for labels.
     std::string Label() const;

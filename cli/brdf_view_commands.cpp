@@ -62,7 +62,7 @@ struct CutArgs {
     std::vector<double> thetaIn{45}, phiIn{0}, thetaOut{45}, phiOut{0};
     std::string vary = "theta-out";
     double from = NAN, to = NAN;
-    bool relative = false;
+    bool relative = false, reciprocal = false;
     std::string plot, title = "BRDF cross section";
     std::vector<int> plotSize{800, 450};
     double yMax = NAN;
@@ -82,6 +82,9 @@ void AddCutOptions(CLI::App* cmd, CutArgs* args) {
     cmd->add_option("--to", args->to, "end of the varying angle, degrees");
     cmd->add_flag("--relative", args->relative,
                   "φ_out counts from φ_in (x is φ_out − φ_in when φ_out varies)");
+    cmd->add_flag("--reciprocal", args->reciprocal,
+                  "where θ_out > θ_in evaluate f(ω'→ω) as f(ω→ω') (Helmholtz reciprocity), "
+                  "so that photons leave by the less grazing direction");
     cmd->add_option("--plot", args->plot,
                     "write a labelled plot: .svg, or an image (.png, .tif, .jpg, ...)");
     cmd->add_option("--title", args->title, "the plot's title")->capture_default_str();
@@ -103,6 +106,7 @@ std::vector<SectionCut> MakeCuts(const CutArgs& args, int samples) {
     SectionCut base;
     base.vary = ParseSectionAxis(args.vary);
     base.relativePhi = args.relative;
+    base.reciprocal = args.reciprocal;
     base.samples = samples;
     DefaultRange(base.vary, &base.from, &base.to);
     if (!std::isnan(args.from)) base.from = args.from;

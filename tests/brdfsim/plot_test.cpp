@@ -5,11 +5,13 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
+#include "brdfsim/brdf_grid.h"
 #include "brdfsim/section.h"
 #include "test_util.h"
 
@@ -207,6 +209,36 @@ TEST(Section, RelativeCutCountsPhiOutFromPhiIn) {
     cut.relativePhi = false;
     CutAngles(cut, 30, &ti, &pi, &to, &po);
     EXPECT_NEAR(po, 30 * kDegree, 1e-12);
+}
+
+// A reciprocal cut evaluates the samples where θ_out > θ_in with the directions exchanged and
+// the others as they are: on a synthetic Phong grid, whose splat estimate is not reciprocal
+// towards grazing, each sample of a reciprocal θ_out cut at θ_in = 60° is the plain evaluation
+// at (θ_out, φ_out) → (θ_in, φ_in) above 60° and the plain cut's value below, and the two cuts
+// differ somewhere above.
+TEST(Section, ReciprocalCutPutsTheMoreGrazingDirectionIn) {
+    auto splats = test::SyntheticSplats("phong:0.4,0.6,10", 20000, true, false, 0.4);
+    const BrdfIsoGrid grid(splats, 4, 9);
+    SectionCut cut;
+    cut.thetaIn = 60, cut.phiIn = 0, cut.phiOut = 180;
+    cut.vary = SectionAxis::kThetaOut;
+    cut.from = 0, cut.to = 85, cut.samples = 18;
+    const Section plain = ComputeSection(grid, cut);
+    cut.reciprocal = true;
+    const Section swapped = ComputeSection(grid, cut);
+    EXPECT_NE(cut.Label().find("reciprocal"), std::string::npos);
+    double largest = 0;
+    for (int i = 0; i < cut.samples; ++i) {
+        if (swapped.x[i] <= 60) {
+            EXPECT_EQ(swapped.f[i][0], plain.f[i][0]) << "θ_out = " << swapped.x[i];
+            continue;
+        }
+        float f = 0;
+        grid.EvalAngles(swapped.x[i] * kDegree, kPi, 60 * kDegree, 0, &f);
+        EXPECT_EQ(swapped.f[i][0], f) << "θ_out = " << swapped.x[i];
+        largest = std::max(largest, std::abs(double(plain.f[i][0]) - f) / f);
+    }
+    EXPECT_GT(largest, 1e-3) << "the plain and reciprocal cuts should differ above 60°";
 }
 
 }  // namespace
