@@ -5,8 +5,9 @@
 # and on 2 threads, best of 3, so that a shared machine's other jobs do not count; the empty
 # 1 × 1 render's CPU time (start-up) is taken off first. With PIXIE=/path/to/Pixie (bin/rndr,
 # bin/sdrc) the same room is rendered by Pixie's raytrace hider at the same samples
-# (cornell_pixie.rib, cornell_gi.sl: one shadow ray and one indirect ray per shaded point, up to
-# 3 diffuse bounces) in the same run, and gonio's CPU time over Pixie's printed.
+# (cornell_pixie.rib, cornell_gi.sl: one shadow ray and one indirect ray per camera hit; Pixie
+# does not shade diffuse ray hits, so it does one bounce) in the same run, and gonio's CPU time
+# over Pixie's printed.
 #
 #   bench/render/run_cornell_pathtrace.sh      (GONIO=path/to/gonio to time another build)
 set -euo pipefail
