@@ -1,5 +1,6 @@
 #include "renderer/scene/scene_file.h"
 
+#include <functional>
 #include <memory>
 #include <set>
 
@@ -45,13 +46,25 @@ struct SceneReading {
         expansion.keys = expanded;
         expansion.firstRead = {reached.begin(), reached.end()};
         expansion.report = &diagnostics;
+        ReadAgain(
+            [&](const Frame& f) {
+                if (f.ordinal == frame.ordinal) HandOver(f, expanded, readings + 1);
+            },
+            [&](SceneBuilder& again) {
+                again.SetLazyExpansion(frame.ordinal, std::move(expansion));
+            });
+    }
+
+    // Reads the scene again, silently (the first reading reported its messages), with the colour
+    // plan; `configure` sets up the builder further.
+    void ReadAgain(const SceneBuilder::FrameHandler& handler,
+                   const std::function<void(SceneBuilder&)>& configure = {}) const {
         Diagnostics silent(nullptr);
-        SceneBuilder again(sceneName, silent, [&](const Frame& f) {
-            if (f.ordinal == frame.ordinal) HandOver(f, expanded, readings + 1);
-        });
+        SceneBuilder again(sceneName, silent, handler);
         again.SetColorPlan(plan);
-        again.SetLazyExpansion(frame.ordinal, std::move(expansion));
-        again.SetTextureHandler([](const TextureRequest&) {});  // made in the first reading
+        // The textures were made in the first reading; a later one passes their requests by.
+        again.SetTextureHandler([](const TextureRequest&) {});
+        if (configure) configure(again);
         read(again, silent);
         again.Finish(EndOf(sceneName));
     }
@@ -77,15 +90,10 @@ void BuildScene(const std::string& sceneName, const RibReader& read, Diagnostics
     read(builder, diagnostics);
     builder.Finish(EndOf(sceneName));
     if (plan.empty()) return;
-    Diagnostics silent(nullptr);
-    SceneBuilder fitted(sceneName, silent, [&](const Frame& frame) {
+    // The frames that fit their colour space, read again with the plan.
+    reading.ReadAgain([&](const Frame& frame) {
         if (plan.count(frame.ordinal)) reading.HandOver(frame, {}, 0);
     });
-    fitted.SetColorPlan(plan);
-    // The textures were made in the first reading; the second one passes their requests by.
-    fitted.SetTextureHandler([](const TextureRequest&) {});
-    read(fitted, silent);
-    fitted.Finish(EndOf(sceneName));
 }
 
 }  // namespace gonio
