@@ -2,8 +2,10 @@
  * simulated from a micro model of grass blades (thesis section 5.3; ribs/grass.rib, or
  * ribs/grass_mowed.rib for mowed grass, which leans one way and is anisotropic). `angle` turns
  * the mowing direction about the normal from dPdu, in degrees: stripes mowed in opposite
- * directions are patches with angle 0 and 180 (thesis fig. 5.22). Kb scales the BRDF, Ka adds
- * ambient light, Cs tints both (the simulated colour is already green). */
+ * directions are patches whose angles differ by 180. brdf() puts the micro model's x axis along
+ * the turned dPdu, and the mowed blades lean along its y, so a lawn seen along dPdu shows its
+ * mowing with angles 90 and 270 (thesis fig. 5.22, ribs/fig5_22_mowed.rib). Kb scales the
+ * BRDF, Ka adds ambient light, Cs tints both (the simulated colour is already green). */
 #include "brdf_lighting.h"
 
 surface grass(string grid = "grass.grd";
