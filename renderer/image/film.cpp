@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace gonio {
 
@@ -251,24 +252,38 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
     const double* const sampleValues = values_.data();
     double* const sums = sums_.data();
     const size_t stride = Stride(), width = size_t(footprint_.max.x - footprint_.min.x + 1);
-    for (int qy = qymin; qy <= qymax; ++qy) {
-        const float dy = y - (qy + 0.5f);
-        if (dy < -yr || dy >= yr) continue;
-        const float yWeight = film_->yWeight_(dy);
-        const size_t row = size_t(qy - footprint_.min.y) * width;
-        for (int k = 0; k < columns; ++k) {
-            const size_t pixel = row + size_t(column[k].offset);
-            const float dx = column[k].dx;
-            if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
-            const float w = separable ? column[k].weight * yWeight : filter.Evaluate(dx, dy);
-            if (w == 0.0f) continue;
-            double* const pixelSums = &sums[pixel * stride];
-            if (filtered == kColourAndAlpha)
-                AddWeighted<kColourAndAlpha>(w, sampleValues, filtered, pixelSums);
-            else
-                AddWeighted<0>(w, sampleValues, filtered, pixelSums);
+    // Two loops: one for the usual case (a separable filter, r g b a, no nearest samples kept)
+    // with nothing tested per pixel but the weight, and one for the rest. Both add the same sums
+    // in the same order.
+    const auto addToRows = [&](auto usual) {
+        constexpr bool kUsual = decltype(usual)::value;
+        for (int qy = qymin; qy <= qymax; ++qy) {
+            const float dy = y - (qy + 0.5f);
+            if (dy < -yr || dy >= yr) continue;
+            const float yWeight = film_->yWeight_(dy);
+            const size_t row = size_t(qy - footprint_.min.y) * width;
+            for (int k = 0; k < columns; ++k) {
+                const size_t pixel = row + size_t(column[k].offset);
+                float w;
+                if constexpr (kUsual) {
+                    w = column[k].weight * yWeight;
+                } else {
+                    const float dx = column[k].dx;
+                    if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
+                    w = separable ? column[k].weight * yWeight : filter.Evaluate(dx, dy);
+                }
+                if (w == 0.0f) continue;
+                if constexpr (kUsual)
+                    AddWeighted<kColourAndAlpha>(w, sampleValues, filtered, &sums[pixel * stride]);
+                else
+                    AddWeighted<0>(w, sampleValues, filtered, &sums[pixel * stride]);
+            }
         }
-    }
+    };
+    if (separable && !keepNearest && filtered == kColourAndAlpha)
+        addToRows(std::true_type{});
+    else
+        addToRows(std::false_type{});
 }
 
 void FilmTile::KeepNearest(size_t pixel, float distance, const float* values) {

@@ -43,6 +43,7 @@ Camera::Camera(const Options& options)
         lensRadius_ = 0.5f * options.focalLength / options.fstop;
         focalDistance_ = options.focalDistance;
     }
+    worldFromCamera_.multVecMatrix(Imath::V3f(0, 0, 0), pinholeOrigin_);
 }
 
 Imath::M44f Camera::ScreenFromCamera() const {
@@ -88,10 +89,14 @@ CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float l
         worldFromCamera.multVecMatrix(org, ray.org);
         worldFromCamera.multDirMatrix(dir, ray.dir);
     };
-    if (motionTimes_.empty())
-        toWorld(worldFromCamera_);
-    else
+    if (!motionTimes_.empty()) {
         toWorld(TransformAt(motionTimes_, cameraFromWorldMotion_, time).inverse());
+    } else if (perspective_ && lensRadius_ == 0) {
+        ray.org = pinholeOrigin_;  // every ray leaves the pinhole
+        worldFromCamera_.multDirMatrix(dir, ray.dir);
+    } else {
+        toWorld(worldFromCamera_);
+    }
     ray.time = time;
     ray.tnear = nearClip_;
     ray.tfar = farClip_;
