@@ -85,7 +85,7 @@ class SampleGenerator {
         SampleState& sample = *out;
         sample.px = px, sample.py = py;
         sample.randomSeed = random.Seed();
-        sample.outputs.assign(size_t(outputFloats_), 0.f);
+        if (outputFloats_ > 0) sample.outputs.assign(size_t(outputFloats_), 0.f);  // AOVs only
         sample.x = px + (sx + random.Next()) / xsamples_;
         sample.y = py + (sy + random.Next()) / ysamples_;
         sample.lensU = random.Next(), sample.lensV = random.Next();
