@@ -11,9 +11,14 @@ namespace gonio {
 class SampleRandom {
   public:
     SampleRandom(uint64_t seed, int px, int py, int sample)
-        : state_(HashCombine(HashCombine(HashCombine(MixBits(seed), uint64_t(uint32_t(px))),
-                                         uint64_t(uint32_t(py))),
-                             uint64_t(sample))) {}
+        : SampleRandom(PixelHash(seed, px, py), sample) {}
+    // The same stream from its pixel's part of the hash, computed once for all its samples.
+    SampleRandom(uint64_t pixelHash, int sample)
+        : state_(HashCombine(pixelHash, uint64_t(sample))) {}
+    static uint64_t PixelHash(uint64_t seed, int px, int py) {
+        return HashCombine(HashCombine(MixBits(seed), uint64_t(uint32_t(px))),
+                           uint64_t(uint32_t(py)));
+    }
     float Next() { return ToUnitFloat(MixBits(state_ += kSplitMix64Step)); }
     // A seed for another stream of this pixel sample (the shaders' random()), independent of
     // this one's values.

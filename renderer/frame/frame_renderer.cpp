@@ -70,25 +70,27 @@ class SampleGenerator {
 
     void AddSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
         for (int py = pixels.min.y; py <= pixels.max.y; ++py)
-            for (int px = pixels.min.x; px <= pixels.max.x; ++px)
+            for (int px = pixels.min.x; px <= pixels.max.x; ++px) {
+                const uint64_t pixelHash = SampleRandom::PixelHash(seed_, px, py);
                 for (int sy = 0, s = 0; sy < ysamples_; ++sy)
                     for (int sx = 0; sx < xsamples_; ++sx, ++s)
-                        samples->push_back(MakeSample(px, py, sx, sy, s));
+                        AddSample(pixelHash, px, py, sx, sy, s, &samples->emplace_back());
+            }
     }
 
   private:
-    SampleState MakeSample(int px, int py, int sx, int sy, int s) const {
-        SampleRandom random(seed_, px, py, s);
-        SampleState sample;
+    void AddSample(uint64_t pixelHash, int px, int py, int sx, int sy, int s,
+                   SampleState* out) const {
+        SampleRandom random(pixelHash, s);
+        SampleState& sample = *out;
         sample.px = px, sample.py = py;
         sample.randomSeed = random.Seed();
-        sample.outputs.assign(size_t(outputFloats_), 0.f);
+        if (outputFloats_ > 0) sample.outputs.assign(size_t(outputFloats_), 0.f);  // AOVs only
         sample.x = px + (sx + random.Next()) / xsamples_;
         sample.y = py + (sy + random.Next()) / ysamples_;
         sample.lensU = random.Next(), sample.lensV = random.Next();
         const float time = shutterOpen_ + random.Next() * shutterLength_;
         sample.ray = camera_.GenerateRay(sample.x, sample.y, sample.lensU, sample.lensV, time);
-        return sample;
     }
 
     uint64_t seed_;

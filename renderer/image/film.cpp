@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace gonio {
 
@@ -19,12 +20,18 @@ int FilterMargin(float radius) { return std::max(0, int(std::ceil(0.5f + radius)
 constexpr float kCancelledWeightFraction = 1e-3f;
 
 // One sample's share of one pixel (FilmTile::sums_): sum[0] += w, sum[1] += |w| and
-// sum[2 + c] += w·values[c], the innermost loop of every render.
+// sum[2 + c] += w·values[c], the innermost loop of every render. A count fixed at compile time
+// (kChannels > 0) lets the compiler unroll and vectorise it.
+template <int kChannels>
 void AddWeighted(float w, const double* __restrict values, int channels, double* __restrict sum) {
+    const int n = kChannels > 0 ? kChannels : channels;
     sum[0] += w;
     sum[1] += std::fabs(w);
-    for (int c = 0; c < channels; ++c) sum[2 + c] += double(w) * values[c];
+    for (int c = 0; c < n; ++c) sum[2 + c] += double(w) * values[c];
 }
+
+// The filtered channels without AOVs: r g b a.
+constexpr int kColourAndAlpha = 4;
 
 }  // namespace
 
@@ -88,10 +95,10 @@ Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
 double Film::BytesNeeded(const FilmSpec& spec, const PixelFilter& filter) {
     const double width = spec.WindowWidth() + 2.0 * FilterMargin(filter.XRadius());
     const double height = spec.WindowHeight() + 2.0 * FilterMargin(filter.YRadius());
-    // A tile's sums (double per channel, two weights), nearest samples and depth (float), and
-    // the resolved image (float per channel).
+    // A tile's sums (double per filtered channel, two weights), nearest samples and depth
+    // (float), and the resolved image (float per channel).
     const double perPixel =
-        8.0 * spec.channels + 16 + 4.0 * spec.channels + 4 + 4.0 * spec.channels;
+        8.0 * spec.FilteredChannels() + 16 + 4.0 * spec.channels + 4 + 4.0 * spec.channels;
     return width * height * perPixel;
 }
 
@@ -187,8 +194,9 @@ FilmTile::FilmTile(const Film& film, int index)
       pixels_(film.TilePixels(index)),
       footprint_(film.Footprint(pixels_)),
       channels_(film.Spec().channels),
+      filtered_(film.Spec().FilteredChannels()),
       columns_(size_t(2 * film.xmargin_ + 1)),
-      values_(size_t(channels_)) {
+      values_(size_t(filtered_)) {
     // A tile wholly in the margin beyond a corner may reach no window pixel.
     const size_t pixels = footprint_.isEmpty()
                               ? 0
@@ -209,7 +217,8 @@ FilmTile::FilmTile(const Film& film, int index)
 // weighting every pixel of the margin in turn.
 void FilmTile::AddSample(int px, int py, float x, float y, const float* values) {
     if (!film_ || !pixels_.intersects(Imath::V2i(px, py))) return;
-    const int depthChannel = film_->Spec().depthChannel;
+    const FilmSpec& spec = film_->Spec();
+    const int depthChannel = spec.HasDepth() ? spec.depthChannel : -1;
     if (depthChannel >= 0 && footprint_.intersects(Imath::V2i(px, py))) {
         float& depth = depth_[PixelIndex(px, py)];
         depth = std::min(depth, values[depthChannel]);
@@ -232,26 +241,49 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
         if (separable && weight == 0.0f && !keepNearest) continue;
         columns_[size_t(columns++)] = {qx - footprint_.min.x, dx, weight};
     }
-    const int channels = channels_;
-    for (int c = 0; c < channels; ++c) values_[size_t(c)] = values[c];
+    // All the values but depth.
+    const int beforeDepth = depthChannel >= 0 ? depthChannel : channels_;
+    std::copy(values, values + beforeDepth, values_.begin());
+    if (beforeDepth < channels_)
+        std::copy(values + beforeDepth + 1, values + channels_, values_.begin() + beforeDepth);
+    const int filtered = filtered_;
     // Locals, so that the stores into the sums do not make the compiler reload the members.
     const Column* const column = columns_.data();
     const double* const sampleValues = values_.data();
     double* const sums = sums_.data();
     const size_t stride = Stride(), width = size_t(footprint_.max.x - footprint_.min.x + 1);
-    for (int qy = qymin; qy <= qymax; ++qy) {
-        const float dy = y - (qy + 0.5f);
-        if (dy < -yr || dy >= yr) continue;
-        const float yWeight = film_->yWeight_(dy);
-        const size_t row = size_t(qy - footprint_.min.y) * width;
-        for (int k = 0; k < columns; ++k) {
-            const size_t pixel = row + size_t(column[k].offset);
-            const float dx = column[k].dx;
-            if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
-            const float w = separable ? column[k].weight * yWeight : filter.Evaluate(dx, dy);
-            if (w != 0.0f) AddWeighted(w, sampleValues, channels, &sums[pixel * stride]);
+    // Two loops: one for the usual case (a separable filter, r g b a, no nearest samples kept)
+    // with nothing tested per pixel but the weight, and one for the rest. Both add the same sums
+    // in the same order.
+    const auto addToRows = [&](auto usual) {
+        constexpr bool kUsual = decltype(usual)::value;
+        for (int qy = qymin; qy <= qymax; ++qy) {
+            const float dy = y - (qy + 0.5f);
+            if (dy < -yr || dy >= yr) continue;
+            const float yWeight = film_->yWeight_(dy);
+            const size_t row = size_t(qy - footprint_.min.y) * width;
+            for (int k = 0; k < columns; ++k) {
+                const size_t pixel = row + size_t(column[k].offset);
+                float w;
+                if constexpr (kUsual) {
+                    w = column[k].weight * yWeight;
+                } else {
+                    const float dx = column[k].dx;
+                    if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
+                    w = separable ? column[k].weight * yWeight : filter.Evaluate(dx, dy);
+                }
+                if (w == 0.0f) continue;
+                if constexpr (kUsual)
+                    AddWeighted<kColourAndAlpha>(w, sampleValues, filtered, &sums[pixel * stride]);
+                else
+                    AddWeighted<0>(w, sampleValues, filtered, &sums[pixel * stride]);
+            }
         }
-    }
+    };
+    if (separable && !keepNearest && filtered == kColourAndAlpha)
+        addToRows(std::true_type{});
+    else
+        addToRows(std::false_type{});
 }
 
 void FilmTile::KeepNearest(size_t pixel, float distance, const float* values) {
@@ -290,18 +322,20 @@ void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) co
             const double* sums = &tile.sums_[pixel * tile.Stride()];
             weightSum += sums[0];
             absWeightSum += sums[1];
-            for (int c = 0; c < channels; ++c) sum[c] += sums[2 + c];
+            for (int k = 0; k < tile.filtered_; ++k) sum[k] += sums[2 + k];
         }
     }
     const bool cancelled =
         absWeightSum == 0.0 || std::fabs(weightSum) < kCancelledWeightFraction * absWeightSum;
-    for (int c = 0; c < channels; ++c) {
-        if (!cancelled)
-            out[c] = float(sum[c] / weightSum);
+    const int depthChannel = spec_.HasDepth() ? spec_.depthChannel : -1;
+    for (int c = 0, k = 0; c < channels; ++c) {
+        if (c == depthChannel)
+            out[c] = depth;
+        else if (!cancelled)
+            out[c] = float(sum[size_t(k++)] / weightSum);
         else
             out[c] = nearest ? nearest[c] : 0.0f;
     }
-    if (spec_.depthChannel >= 0 && spec_.depthChannel < channels) out[spec_.depthChannel] = depth;
 }
 
 Image Film::Resolve() {

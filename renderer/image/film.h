@@ -55,6 +55,9 @@ struct FilmSpec {
                                    float cropYmin, float cropYmax, int xsamples, int ysamples,
                                    int channels);
 
+    bool HasDepth() const { return depthChannel >= 0 && depthChannel < channels; }
+    // The channels the pixel filter sums: all but depth.
+    int FilteredChannels() const { return channels - (HasDepth() ? 1 : 0); }
     int WindowWidth() const { return xmax - xmin + 1; }
     int WindowHeight() const { return ymax - ymin + 1; }
     int SamplesPerPixel() const { return xsamples * ysamples; }
@@ -179,16 +182,19 @@ class FilmTile {
     Imath::Box2i pixels_;     // whose samples it takes
     Imath::Box2i footprint_;  // the window pixels they can reach
     int channels_ = 0;
-    // Per footprint pixel, side by side (one cache line or two for the standard channels): the
-    // sum of weights, the sum of |weights|, then the weighted sums of the channels_ channels.
+    // Per footprint pixel, side by side (one cache line for the standard channels): the sum of
+    // weights, the sum of |weights|, then the weighted sums of the filtered channels: all but
+    // the depth channel (resolved by min, from depth_), in channel order.
     std::vector<double> sums_;
     // Distance², then the channels: 1 + channels_ per pixel; empty unless the film keeps them.
     std::vector<float> nearest_;
     std::vector<float> depth_;                               // per footprint pixel
-    size_t Stride() const { return 2 + size_t(channels_); }  // doubles a pixel in sums_
+    int filtered_ = 0;                                       // channels summed in sums_
+    size_t Stride() const { return 2 + size_t(filtered_); }  // doubles a pixel in sums_
 
     // Scratch for AddSample, sized once: the columns of pixels px - xmargin .. px + xmargin that
-    // a sample reaches, with its offset from and weight for each, and its values as doubles.
+    // a sample reaches, with its offset from and weight for each, and its filtered channels'
+    // values as doubles.
     struct Column {
         int offset;  // of the column from footprint_.min.x
         float dx, weight;

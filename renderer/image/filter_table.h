@@ -20,16 +20,18 @@ class FilterTable {
     // The weight at offset d (either sign); 0 when |d| > radius.
     float operator()(float d) const {
         const float x = (d < 0 ? -d : d) * scale_;
-        const int last = int(table_.size()) - 1;
-        if (!(x <= float(last))) return 0;
+        if (!(x <= intervals_)) return 0;
         const int i = int(x);
-        if (i == last) return table_[size_t(last)];
-        const float f = x - float(i);
-        return table_[i] + f * (table_[i + 1] - table_[i]);
+        const float f = x - float(i);  // 0 at the last entry, whose copy follows it
+        const float* table = table_.data();
+        return table[i] + f * (table[i + 1] - table[i]);
     }
 
   private:
-    std::vector<float> table_ = std::vector<float>(1, 0.f);
+    // The weights at 0, radius / intervals_, ... radius, and the last once more, so that the
+    // interpolation needs no test for the end.
+    std::vector<float> table_ = std::vector<float>(2, 0.f);
+    float intervals_ = 0;
     float scale_ = 0;  // entry intervals per unit offset
 };
 

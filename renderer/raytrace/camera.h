@@ -40,6 +40,7 @@ class Camera {
 
   private:
     Imath::M44f worldFromCamera_;
+    Imath::V3f pinholeOrigin_;  // a still perspective camera's rays' origin, in world space
     std::vector<float> motionTimes_;
     std::vector<Imath::M44f> cameraFromWorldMotion_;
     bool perspective_;
