@@ -74,18 +74,19 @@ class SampleGenerator {
                 const uint64_t pixelHash = SampleRandom::PixelHash(seed_, px, py);
                 for (int sy = 0, s = 0; sy < ysamples_; ++sy)
                     for (int sx = 0; sx < xsamples_; ++sx, ++s)
-                        AddSample(pixelHash, px, py, sx, sy, s, &samples->emplace_back());
+                        FillSample(pixelHash, px, py, sx, sy, s, &samples->emplace_back());
             }
     }
 
   private:
-    void AddSample(uint64_t pixelHash, int px, int py, int sx, int sy, int s,
-                   SampleState* out) const {
+    // Fills a new (default) sample s = sy * xsamples + sx of pixel (px, py).
+    void FillSample(uint64_t pixelHash, int px, int py, int sx, int sy, int s,
+                    SampleState* out) const {
         SampleRandom random(pixelHash, s);
         SampleState& sample = *out;
         sample.px = px, sample.py = py;
         sample.randomSeed = random.Seed();
-        if (outputFloats_ > 0) sample.outputs.assign(size_t(outputFloats_), 0.f);  // AOVs only
+        if (outputFloats_ > 0) sample.outputs.assign(size_t(outputFloats_), 0.f);
         sample.x = px + (sx + random.Next()) / xsamples_;
         sample.y = py + (sy + random.Next()) / ysamples_;
         sample.lensU = random.Next(), sample.lensV = random.Next();

@@ -217,8 +217,7 @@ FilmTile::FilmTile(const Film& film, int index)
 // weighting every pixel of the margin in turn.
 void FilmTile::AddSample(int px, int py, float x, float y, const float* values) {
     if (!film_ || !pixels_.intersects(Imath::V2i(px, py))) return;
-    const FilmSpec& spec = film_->Spec();
-    const int depthChannel = spec.HasDepth() ? spec.depthChannel : -1;
+    const int depthChannel = film_->Spec().DepthChannelOrNone();
     if (depthChannel >= 0 && footprint_.intersects(Imath::V2i(px, py))) {
         float& depth = depth_[PixelIndex(px, py)];
         depth = std::min(depth, values[depthChannel]);
@@ -327,7 +326,7 @@ void Film::ResolvePixel(int px, int py, std::vector<double>& sum, float* out) co
     }
     const bool cancelled =
         absWeightSum == 0.0 || std::fabs(weightSum) < kCancelledWeightFraction * absWeightSum;
-    const int depthChannel = spec_.HasDepth() ? spec_.depthChannel : -1;
+    const int depthChannel = spec_.DepthChannelOrNone();
     for (int c = 0, k = 0; c < channels; ++c) {
         if (c == depthChannel)
             out[c] = depth;

@@ -56,6 +56,7 @@ struct FilmSpec {
                                    int channels);
 
     bool HasDepth() const { return depthChannel >= 0 && depthChannel < channels; }
+    int DepthChannelOrNone() const { return HasDepth() ? depthChannel : -1; }
     // The channels the pixel filter sums: all but depth.
     int FilteredChannels() const { return channels - (HasDepth() ? 1 : 0); }
     int WindowWidth() const { return xmax - xmin + 1; }

@@ -84,7 +84,7 @@ CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float l
         dir = (focus - org) / focalDistance_;
     }
     CameraRay ray;
-    // A still camera's matrix by reference: copying it was a third of the cost of a ray.
+    // A still camera's matrix by reference, not copied for every ray.
     const auto toWorld = [&](const Imath::M44f& worldFromCamera) {
         worldFromCamera.multVecMatrix(org, ray.org);
         worldFromCamera.multDirMatrix(dir, ray.dir);
