@@ -41,6 +41,7 @@ class Sphere final : public RevolvedQuadric {
         SetExtent({V2d(radius * cosMin, 0), V2d(radius * cosMax, 0)}, std::min(z0, z1),
                   std::max(z0, z1));
         SetSphericalSurface(radius);
+        orientation_ = float(SignOf(thetaMax_) * SignOf(phiMax_ - phiMin_) * SignOf(radius));
     }
 
     // A whole sphere's hits, the renderer's common case, straight from the point: its one
@@ -63,6 +64,10 @@ class Sphere final : public RevolvedQuadric {
         return Sweep(ProfileAtAngle(rho / distance, z / distance), side * p.x, side * p.y, float(u),
                      float(v));
     }
+
+    // Sweep's normal, sign(θmax)·Rz(θ)·profile.normal, is sign(θmax)·sign(φmax − φmin)·p/r
+    // (ProfileAtAngle): the one thing camera hits that are not shaded need, without atan2.
+    V3f OrientedNormalAt(const V3f& point) const override { return orientation_ * point; }
 
   protected:
     ProfilePoint Profile(double v) const override {
@@ -119,7 +124,8 @@ class Sphere final : public RevolvedQuadric {
     }
 
     double radius_, phiMin_ = 0, phiMax_ = 0;
-    AngleRange phiRange_;  // (cos φ, sin φ) of the profile's points
+    float orientation_ = 1;  // ±1: see OrientedNormalAt
+    AngleRange phiRange_;    // (cos φ, sin φ) of the profile's points
 };
 
 // The surface swept by the segment point1 → point2: RISpec's hyperboloid, of which the

@@ -77,6 +77,9 @@ class Quadric {
     // A normal at a point IntersectPoint reported, without (u, v): not normalised, facing
     // either side; zero where the surface has none (a cone's apex).
     virtual V3f NormalAt(const V3f& point) const = 0;
+    // The direction of EvaluateAt(point).Ng (not normalised, up to rounding) without (u, v) or
+    // the tangents, for the quadrics where that is cheaper; zero for the others.
+    virtual V3f OrientedNormalAt(const V3f& /*point*/) const { return V3f(0); }
     // The surface point at parameters (u, v) in [0,1]².
     virtual SurfaceGeometry Evaluate(float u, float v) const = 0;
     // Evaluate(ParametersAt(point)) for a point IntersectPoint reported, up to float rounding;

@@ -177,7 +177,20 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     M44f worldFromSpace, spaceFromWorld;
     Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
     const V3f worldP = org + hit.t * dir;
-    const ObjectHit object = s.EvaluateObject(*record, hit, worldP, dir, spaceFromWorld);
+    // A quadric without an N of its own may give its normal without (u, v) and the tangents,
+    // which cost inverse trigonometry: they wait for FinishEvaluate, which with ShadingRate
+    // sharing only one camera hit in about xsamples·ysamples gets.
+    const V3f pointNormal = record->quadric && record->quadricN < 0
+                                ? record->quadric->quadric->OrientedNormalAt(hit.objectP)
+                                : V3f(0);
+    const bool awaitsParameters = pointNormal != V3f(0);
+    ObjectHit object;
+    if (awaitsParameters) {
+        object.geometry.Ng = object.N = pointNormal;
+        object.geometry.dPdu = object.geometry.dPdv = V3f(0);
+    } else {
+        object = s.EvaluateObject(*record, hit, worldP, dir, spaceFromWorld);
+    }
 
     // At the top level the record's space is the world (SpaceTransforms gives identities).
     M44f placedWorldFromObject, placedObjectFromWorld;
@@ -208,11 +221,21 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     sp.hitU = hit.u, sp.hitV = hit.v;
     sp.stencils = object.stencils;
     sp.attributes = resolved.attributes;
+    sp.awaitsParameters = awaitsParameters;
+    sp.objectP = hit.objectP;
 }
 
 void RayScene::FinishEvaluate(SurfacePoint* out) const {
     SurfacePoint& sp = *out;
     const GeometryRecord* record = sp.record;
+    if (sp.awaitsParameters) {
+        const ObjectHit object =
+            EvaluateQuadricAt(std::get<QuadricShape>(record->shape->geometry), sp.objectP, nullptr);
+        sp.u = object.geometry.u, sp.v = object.geometry.v;
+        sp.dPdu = object.geometry.dPdu, sp.dPdv = object.geometry.dPdv;
+        sp.stencils = object.stencils;
+        sp.awaitsParameters = false;
+    }
     sp.dPdu = TransformVector(sp.worldFromObject, sp.dPdu);
     sp.dPdv = TransformVector(sp.worldFromObject, sp.dPdv);
     const Attributes& attributes = *sp.attributes;

@@ -29,6 +29,10 @@ struct SurfacePoint {
     unsigned primID = 0;
     float hitU = 0, hitV = 0;
     ClassStencils stencils;
+    // A sphere's camera hit (RayScene::EvaluateGeometry) has its normals from the point alone;
+    // u, v, dPdu, dPdv and the stencils follow from objectP in FinishEvaluate, if it is shaded.
+    bool awaitsParameters = false;
+    Imath::V3f objectP;
 };
 
 }  // namespace gonio

@@ -37,6 +37,15 @@ void ExpectMatchesEvaluate(const QuadricCase& c, const Quadric& shape, const V3f
     ExpectClose(actual.dPdu, expected.dPdu, 1e-5, 1e-6 * c.scale, "dPdu", point);
     ExpectClose(actual.dPdv, expected.dPdv, 1e-5, 1e-6 * c.scale, "dPdv", point);
     ExpectClose(actual.Ng, expected.Ng, 1e-5, 1, "Ng", point);
+    // The normal without parameters, where a quadric gives one (a sphere always: the
+    // renderer's camera hits take it instead of EvaluateAt's), has the same sense.
+    const V3f oriented = shape.OrientedNormalAt(point);
+    if (c.name.rfind("Sphere", 0) == 0) {
+        EXPECT_NE(oriented, V3f(0)) << c.name;
+    }
+    if (oriented != V3f(0)) {
+        ExpectClose(oriented.normalized(), expected.Ng, 1e-5, 1, "OrientedNormalAt", point);
+    }
 }
 
 TEST_P(QuadricEvaluateAt, MatchesEvaluateOnTheParameterGrid) {
