@@ -142,7 +142,7 @@ class TileRenderer {
     std::vector<SampleState> samples_;
     TransparentLayers layers_;  // a layer's hits, by sample: HitAt(k).ray
     ShadingBatch batch_;
-    std::vector<float> Ci_, Oi_, outputValues_, filmValues_;
+    std::vector<float> Ci_, Oi_, outputValues_, filmPositions_, filmValues_;
     std::vector<ShadingPointHit> sharingHits_;
     std::vector<int> shaded_, shadedBy_;
     // Shades one group of a layer's hits and composites them into their samples.
@@ -261,16 +261,31 @@ void TileRenderer::TracePaths() {
 }
 
 void TileRenderer::Splat(FilmTile* film) {
-    filmValues_.resize(kStandardChannelCount + size_t(outputFloats_));
-    for (const SampleState& sample : samples_) {
-        filmValues_[kChannelR] = sample.colour[0];
-        filmValues_[kChannelG] = sample.colour[1];
-        filmValues_[kChannelB] = sample.colour[2];
-        filmValues_[kChannelA] = sample.alpha;
-        filmValues_[kChannelZ] = sample.depth;
-        std::copy(sample.outputs.begin(), sample.outputs.end(),
-                  filmValues_.begin() + kStandardChannelCount);
-        film->AddSample(sample.px, sample.py, sample.x, sample.y, filmValues_.data());
+    // The samples come pixel by pixel (SampleGenerator): each pixel's go to the film together,
+    // their values in the film's channel order (r g b a z, then the AOVs).
+    const size_t channels = kStandardChannelCount + size_t(outputFloats_);
+    const size_t perPixel = size_t(xsamples_) * size_t(ysamples_);
+    filmPositions_.resize(2 * perPixel);
+    filmValues_.resize(channels * perPixel);
+    for (size_t first = 0; first < samples_.size();) {
+        const SampleState& head = samples_[first];
+        size_t count = 0;
+        for (; count < perPixel && first + count < samples_.size(); ++count) {
+            const SampleState& sample = samples_[first + count];
+            if (sample.px != head.px || sample.py != head.py) break;
+            float* position = &filmPositions_[2 * count];
+            position[0] = sample.x, position[1] = sample.y;
+            float* values = &filmValues_[channels * count];
+            values[kChannelR] = sample.colour[0];
+            values[kChannelG] = sample.colour[1];
+            values[kChannelB] = sample.colour[2];
+            values[kChannelA] = sample.alpha;
+            values[kChannelZ] = sample.depth;
+            std::copy(sample.outputs.begin(), sample.outputs.end(), values + kStandardChannelCount);
+        }
+        film->AddPixelSamples(head.px, head.py, int(count), filmPositions_.data(),
+                              filmValues_.data());
+        first += count;
     }
 }
 

@@ -195,6 +195,10 @@ FilmTile::FilmTile(const Film& film, int index)
       footprint_(film.Footprint(pixels_)),
       channels_(film.Spec().channels),
       filtered_(film.Spec().FilteredChannels()),
+      depthChannel_(film.Spec().DepthChannelOrNone()),
+      separableColourAndAlpha_(film.Filter().Separable() && !film.keepNearest_ &&
+                               filtered_ == kColourAndAlpha &&
+                               (depthChannel_ < 0 || depthChannel_ >= kColourAndAlpha)),
       columns_(size_t(2 * film.xmargin_ + 1)),
       values_(size_t(filtered_)) {
     // A tile wholly in the margin beyond a corner may reach no window pixel.
@@ -216,24 +220,73 @@ FilmTile::FilmTile(const Film& film, int index)
 // and the values are made doubles once. The sums are the same, added in the same order, as
 // weighting every pixel of the margin in turn.
 void FilmTile::AddSample(int px, int py, float x, float y, const float* values) {
-    if (!film_ || !pixels_.intersects(Imath::V2i(px, py))) return;
-    const int depthChannel = film_->Spec().DepthChannelOrNone();
-    if (depthChannel >= 0 && footprint_.intersects(Imath::V2i(px, py))) {
+    const float position[2] = {x, y};
+    AddPixelSamples(px, py, 1, position, values);
+}
+
+void FilmTile::AddPixelSamples(int px, int py, int count, const float* positions,
+                               const float* values) {
+    if (!film_ || count <= 0 || !pixels_.intersects(Imath::V2i(px, py))) return;
+    if (depthChannel_ >= 0 && footprint_.intersects(Imath::V2i(px, py))) {
         float& depth = depth_[PixelIndex(px, py)];
-        depth = std::min(depth, values[depthChannel]);
+        for (int i = 0; i < count; ++i)
+            depth = std::min(depth, values[size_t(i) * channels_ + depthChannel_]);
     }
+    const Imath::Box2i reach(Imath::V2i(std::max(footprint_.min.x, px - film_->xmargin_),
+                                        std::max(footprint_.min.y, py - film_->ymargin_)),
+                             Imath::V2i(std::min(footprint_.max.x, px + film_->xmargin_),
+                                        std::min(footprint_.max.y, py + film_->ymargin_)));
+    if (reach.isEmpty()) return;
+    for (int i = 0; i < count; ++i) {
+        const float x = positions[2 * i], y = positions[2 * i + 1];
+        const float* sample = values + size_t(i) * channels_;
+        if (separableColourAndAlpha_)
+            AddSeparableColourAndAlpha(reach, x, y, sample);
+        else
+            AddAnyChannels(reach, x, y, sample);
+    }
+}
+
+// The sample counts for pixel q when -radius <= x - (q + 0.5) < radius; a separable filter's
+// weight is the product of the column's and the row's, 0 wherever either is.
+void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
+                                          const float* values) {
+    const Film& film = *film_;
+    const float xr = film.filter_.XRadius(), yr = film.filter_.YRadius();
+    Column* const column = columns_.data();
+    int columns = 0;
+    for (int qx = reach.min.x; qx <= reach.max.x; ++qx) {
+        const float dx = x - (qx + 0.5f);
+        if (dx < -xr || dx >= xr) continue;
+        const float weight = film.xWeight_(dx);
+        if (weight != 0.0f) column[columns++] = {qx - footprint_.min.x, dx, weight};
+    }
+    // r g b a lead the channels (separableColourAndAlpha_).
+    const double value[kColourAndAlpha] = {values[0], values[1], values[2], values[3]};
+    double* const sums = sums_.data();
+    const size_t width = size_t(footprint_.max.x - footprint_.min.x + 1);
+    constexpr size_t kStride = 2 + kColourAndAlpha;
+    for (int qy = reach.min.y; qy <= reach.max.y; ++qy) {
+        const float dy = y - (qy + 0.5f);
+        if (dy < -yr || dy >= yr) continue;
+        const float yWeight = film.yWeight_(dy);
+        if (yWeight == 0.0f) continue;
+        double* const row = sums + size_t(qy - footprint_.min.y) * width * kStride;
+        for (int k = 0; k < columns; ++k) {
+            const float w = column[k].weight * yWeight;
+            if (w != 0.0f)
+                AddWeighted<kColourAndAlpha>(w, value, kColourAndAlpha,
+                                             row + size_t(column[k].offset) * kStride);
+        }
+    }
+}
+
+void FilmTile::AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values) {
     const PixelFilter& filter = film_->Filter();
-    const int qxmin = std::max(footprint_.min.x, px - film_->xmargin_);
-    const int qxmax = std::min(footprint_.max.x, px + film_->xmargin_);
-    const int qymin = std::max(footprint_.min.y, py - film_->ymargin_);
-    const int qymax = std::min(footprint_.max.y, py + film_->ymargin_);
-    if (qxmin > qxmax || qymin > qymax) return;
-    // The sample counts for pixel q when -radius <= x - (q + 0.5) < radius; a separable filter's
-    // weight is the product of the column's and the row's, 0 wherever the column's is.
     const float xr = filter.XRadius(), yr = filter.YRadius();
     const bool separable = filter.Separable(), keepNearest = !nearest_.empty();
     int columns = 0;
-    for (int qx = qxmin; qx <= qxmax; ++qx) {
+    for (int qx = reach.min.x; qx <= reach.max.x; ++qx) {
         const float dx = x - (qx + 0.5f);
         if (dx < -xr || dx >= xr) continue;
         const float weight = film_->xWeight_(dx);
@@ -241,48 +294,25 @@ void FilmTile::AddSample(int px, int py, float x, float y, const float* values) 
         columns_[size_t(columns++)] = {qx - footprint_.min.x, dx, weight};
     }
     // All the values but depth.
-    const int beforeDepth = depthChannel >= 0 ? depthChannel : channels_;
+    const int beforeDepth = depthChannel_ >= 0 ? depthChannel_ : channels_;
     std::copy(values, values + beforeDepth, values_.begin());
     if (beforeDepth < channels_)
         std::copy(values + beforeDepth + 1, values + channels_, values_.begin() + beforeDepth);
-    const int filtered = filtered_;
-    // Locals, so that the stores into the sums do not make the compiler reload the members.
-    const Column* const column = columns_.data();
-    const double* const sampleValues = values_.data();
-    double* const sums = sums_.data();
     const size_t stride = Stride(), width = size_t(footprint_.max.x - footprint_.min.x + 1);
-    // Two loops: one for the usual case (a separable filter, r g b a, no nearest samples kept)
-    // with nothing tested per pixel but the weight, and one for the rest. Both add the same sums
-    // in the same order.
-    const auto addToRows = [&](auto usual) {
-        constexpr bool kUsual = decltype(usual)::value;
-        for (int qy = qymin; qy <= qymax; ++qy) {
-            const float dy = y - (qy + 0.5f);
-            if (dy < -yr || dy >= yr) continue;
-            const float yWeight = film_->yWeight_(dy);
-            const size_t row = size_t(qy - footprint_.min.y) * width;
-            for (int k = 0; k < columns; ++k) {
-                const size_t pixel = row + size_t(column[k].offset);
-                float w;
-                if constexpr (kUsual) {
-                    w = column[k].weight * yWeight;
-                } else {
-                    const float dx = column[k].dx;
-                    if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
-                    w = separable ? column[k].weight * yWeight : filter.Evaluate(dx, dy);
-                }
-                if (w == 0.0f) continue;
-                if constexpr (kUsual)
-                    AddWeighted<kColourAndAlpha>(w, sampleValues, filtered, &sums[pixel * stride]);
-                else
-                    AddWeighted<0>(w, sampleValues, filtered, &sums[pixel * stride]);
-            }
+    for (int qy = reach.min.y; qy <= reach.max.y; ++qy) {
+        const float dy = y - (qy + 0.5f);
+        if (dy < -yr || dy >= yr) continue;
+        const float yWeight = film_->yWeight_(dy);
+        const size_t row = size_t(qy - footprint_.min.y) * width;
+        for (int k = 0; k < columns; ++k) {
+            const size_t pixel = row + size_t(columns_[size_t(k)].offset);
+            const float dx = columns_[size_t(k)].dx;
+            if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
+            const float w =
+                separable ? columns_[size_t(k)].weight * yWeight : filter.Evaluate(dx, dy);
+            if (w != 0.0f) AddWeighted<0>(w, values_.data(), filtered_, &sums_[pixel * stride]);
         }
-    };
-    if (separable && !keepNearest && filtered == kColourAndAlpha)
-        addToRows(std::true_type{});
-    else
-        addToRows(std::false_type{});
+    }
 }
 
 void FilmTile::KeepNearest(size_t pixel, float distance, const float* values) {

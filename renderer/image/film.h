@@ -166,6 +166,9 @@ class FilmTile {
     // Adds a sample of pixel (px, py) taken at raster position (x, y), with Spec().channels
     // values. A sample of a pixel outside the tile is dropped.
     void AddSample(int px, int py, float x, float y, const float* values);
+    // Adds `count` samples of pixel (px, py) at once, the same as adding them in turn:
+    // `positions` holds their (x, y), `values` their Spec().channels values each.
+    void AddPixelSamples(int px, int py, int count, const float* positions, const float* values);
 
   private:
     friend class Film;
@@ -174,6 +177,12 @@ class FilmTile {
         return size_t(py - footprint_.min.y) * size_t(footprint_.max.x - footprint_.min.x + 1) +
                size_t(px - footprint_.min.x);
     }
+    // AddSample's two ways to splat a sample at (x, y) into the footprint pixels `reach`: the
+    // usual case (separableColourAndAlpha_), with nothing tested per pixel but the weight, and
+    // every other. Both add the same sums in the same order.
+    void AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
+                                    const float* values);
+    void AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values);
     // Makes a sample at squared distance `distance` from the pixel's centre its nearest one, if
     // it is nearer than the one kept.
     void KeepNearest(size_t pixel, float distance, const float* values);
@@ -189,8 +198,11 @@ class FilmTile {
     std::vector<double> sums_;
     // Distance², then the channels: 1 + channels_ per pixel; empty unless the film keeps them.
     std::vector<float> nearest_;
-    std::vector<float> depth_;                               // per footprint pixel
-    int filtered_ = 0;                                       // channels summed in sums_
+    std::vector<float> depth_;  // per footprint pixel
+    int filtered_ = 0;          // channels summed in sums_
+    int depthChannel_ = -1;     // Spec().DepthChannelOrNone()
+    // A separable filter, no nearest samples kept, and r g b a the filtered channels.
+    bool separableColourAndAlpha_ = false;
     size_t Stride() const { return 2 + size_t(filtered_); }  // doubles a pixel in sums_
 
     // Scratch for AddSample, sized once: the columns of pixels px - xmargin .. px + xmargin that
