@@ -20,6 +20,8 @@ class SampleRandom {
                            uint64_t(uint32_t(py)));
     }
     float Next() { return ToUnitFloat(MixBits(state_ += kSplitMix64Step)); }
+    // Passes over n values unread: the ones after them stay what they would have been.
+    void Skip(int n) { state_ += uint64_t(n) * kSplitMix64Step; }
     // A seed for another stream of this pixel sample (the shaders' random()), independent of
     // this one's values.
     uint64_t Seed() const { return MixBits(state_ ^ 0x5eedc0de5eedc0deull); }

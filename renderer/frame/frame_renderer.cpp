@@ -89,8 +89,13 @@ class SampleGenerator {
         if (outputFloats_ > 0) sample.outputs.assign(size_t(outputFloats_), 0.f);
         sample.x = px + (sx + random.Next()) / xsamples_;
         sample.y = py + (sy + random.Next()) / ysamples_;
-        sample.lensU = random.Next(), sample.lensV = random.Next();
-        const float time = shutterOpen_ + random.Next() * shutterLength_;
+        // Values nothing reads are not drawn (but skipped: the stream stays the same).
+        if (camera_.HasLens())
+            sample.lensU = random.Next(), sample.lensV = random.Next();
+        else
+            random.Skip(2);
+        const float time =
+            shutterLength_ > 0 ? shutterOpen_ + random.Next() * shutterLength_ : shutterOpen_;
         sample.ray = camera_.GenerateRay(sample.x, sample.y, sample.lensU, sample.lensV, time);
     }
 

@@ -29,6 +29,8 @@ class Camera {
     CameraRay GenerateRay(float rasterX, float rasterY, float lensU, float lensV,
                           float time = 0) const;
 
+    // Whether GenerateRay's (lensU, lensV) matter (DepthOfField).
+    bool HasLens() const { return lensRadius_ > 0; }
     const Imath::M44f& WorldFromCamera() const { return worldFromCamera_; }
     // RISpec's screen space from camera space (projective for perspective), and raster and NDC
     // from screen, as row-vector matrices: the shading language's "screen", "NDC", "raster".
