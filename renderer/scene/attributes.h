@@ -63,6 +63,13 @@ struct Attributes {
     // whose hits lie within it on the same surface share one shaded colour (docs/user-guide.md,
     // "Shading rate"); 1 by default, as in RenderMan.
     float shadingRate = 1;
+    // Level of detail (RISpec 3.2's Detail and DetailRange): the raster area of the
+    // current Detail bound times RelativeDetail (infinite until a Detail is given, or when the
+    // bound reaches behind the eye), and the range minvisible lowertransition uppertransition
+    // maxvisible of detail in which the primitives that follow are shown (ShownAtDetail).
+    float detail = std::numeric_limits<float>::infinity();
+    float detailRange[4] = {0, 0, std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::infinity()};
     bool matte = false;
     PatchBasis ubasis, vbasis;  // bezier unless Basis says otherwise
     // TrimCurve: the region of (u,v) the following NuPatches keep; null: untrimmed.
@@ -71,5 +78,12 @@ struct Attributes {
     // Every Attribute request by name, merged and typed (attribute() reads them too).
     std::map<std::string, ParamDict> user;
 };
+
+// Whether primitives of the level-of-detail range `range` (DetailRange) show at `detail`. A
+// representation is wholly visible between the transitions and fades linearly to nothing at
+// minvisible and maxvisible; gonio does not dissolve one into the next but shows it where it is
+// more than half visible, and at exactly half where it fades out, so that of two
+// representations whose transitions meet exactly one shows at every detail.
+bool ShownAtDetail(float detail, const float range[4]);
 
 }  // namespace gonio

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "base/math.h"
 #include "renderer/scene/scene_builder_state.h"
 #include "renderer/scene/scene_colors.h"
 #include "renderer/scene/standard_options.h"
+#include "renderer/scene/view_frustum.h"
 
 namespace gonio {
 namespace {
@@ -181,11 +183,43 @@ void SceneBuilder::ShadingInterpolation(const std::string&, const FileLoc& loc) 
 void SceneBuilder::Bound(const std::vector<float>&, const FileLoc& loc) {
     IgnoredRequest("Bound", loc);
 }
-void SceneBuilder::Detail(const std::vector<float>&, const FileLoc& loc) {
-    IgnoredRequest("Detail", loc);
+// ---- level of detail ------------------------------------------------------------------------
+
+bool ShownAtDetail(float detail, const float range[4]) {
+    const float minVisible = range[0], lower = range[1], upper = range[2], maxVisible = range[3];
+    if (!(detail >= minVisible && detail <= maxVisible)) return false;
+    if (detail < lower) return detail - minVisible > 0.5f * (lower - minVisible);
+    if (detail > upper) return maxVisible - detail >= 0.5f * (maxVisible - upper);
+    return true;
 }
-void SceneBuilder::DetailRange(float, float, float, float, const FileLoc& loc) {
-    IgnoredRequest("DetailRange", loc);
+
+void SceneBuilder::Detail(const std::vector<float>& bound, const FileLoc& loc) {
+    if (bound.size() != 6) {
+        diagnostics_.Error(loc, "Detail expects 6 numbers (xmin xmax ymin ymax zmin zmax), got " +
+                                    std::to_string(bound.size()));
+        return;
+    }
+    // Inside an object definition the camera is not where the instances will be: the detail
+    // stays infinite there (the finest representation), as it does outside the world.
+    float detail = std::numeric_limits<float>::infinity();
+    const Options& options = state_->options;
+    if (state_->inWorld && !state_->openObject)
+        detail = BoxDetail(options, state_->transform * options.cameraFromWorld, bound.data());
+    MutableAttributes().detail = detail * options.relativeDetail;
+}
+
+void SceneBuilder::DetailRange(float minVisible, float lowerTransition, float upperTransition,
+                               float maxVisible, const FileLoc& loc) {
+    if (!(minVisible <= lowerTransition && lowerTransition <= upperTransition &&
+          upperTransition <= maxVisible)) {
+        diagnostics_.Error(loc,
+                           "DetailRange expects minvisible <= lowertransition <= "
+                           "uppertransition <= maxvisible");
+        return;
+    }
+    float* range = MutableAttributes().detailRange;
+    range[0] = minVisible, range[1] = lowerTransition, range[2] = upperTransition,
+    range[3] = maxVisible;
 }
 void SceneBuilder::GeometricApproximation(const std::string&, float, const FileLoc& loc) {
     IgnoredRequest("GeometricApproximation", loc);

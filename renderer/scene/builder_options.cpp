@@ -225,8 +225,12 @@ void SceneBuilder::ColorSamples(const std::vector<float>& nRGB, const std::vecto
     SetColorComponents(static_cast<int>(nRGB.size() / 3), nRGB, RGBn, {});
 }
 
-void SceneBuilder::RelativeDetail(float, const FileLoc& loc) {
-    IgnoredRequest("RelativeDetail", loc);
+void SceneBuilder::RelativeDetail(float relativeDetail, const FileLoc& loc) {
+    if (!(relativeDetail >= 0) || !std::isfinite(relativeDetail)) {
+        diagnostics_.Error(loc, "RelativeDetail must be a finite number >= 0");
+        return;
+    }
+    state_->options.relativeDetail = relativeDetail;
 }
 
 bool SceneBuilder::TypeOptionParam(const std::string& request, const std::string& name,

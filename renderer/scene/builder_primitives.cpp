@@ -74,6 +74,9 @@ bool SceneBuilder::TypeVars(const ParamList& params, PrimVarSet* vars) {
 
 void SceneBuilder::AddShape(ShapeGeometry geometry, const FileLoc& loc,
                             std::shared_ptr<const TrimRegion> trim) {
+    // Every motion sample of a primitive the level of detail hides (the attributes cannot
+    // change between them).
+    if (!ShownAtDetail(state_->attributes.detail, state_->attributes.detailRange)) return;
     if (state_->primitiveSample > 0) {
         AddDeformationSample(geometry, loc);
         return;

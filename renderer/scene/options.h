@@ -38,6 +38,7 @@ struct Options {
     std::string projection = "orthographic";
     float fov = 90;
     float nearClip = 1e-10f, farClip = std::numeric_limits<float>::infinity();
+    float relativeDetail = 1;  // RelativeDetail: scales every Detail bound's raster area
     float fstop = std::numeric_limits<float>::infinity(), focalLength = 0, focalDistance = 0;
     float shutterOpen = 0, shutterClose = 0;
     float xsamples = 2, ysamples = 2;

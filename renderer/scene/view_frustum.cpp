@@ -39,17 +39,49 @@ void EffectiveScreenWindow(const Options& options, float window[4]) {
     }
 }
 
+namespace {
+
+// Screen coordinates are x / (z tan(fov/2)) under perspective, x itself otherwise: the divisor.
+struct ScreenDepth {
+    bool perspective;
+    float tanHalfFov;
+    float operator()(const V3f& p) const { return perspective ? tanHalfFov * p.z : 1.f; }
+};
+
+ScreenDepth ScreenDepthOf(const Options& options) {
+    const bool perspective = options.projection == "perspective";
+    return {perspective, perspective ? std::tan(options.fov * kPiF / 360.f) : 1};
+}
+
+}  // namespace
+
+float BoxDetail(const Options& options, const Imath::M44f& cameraFromObject,
+                const float bound6[6]) {
+    V3f c[8];
+    Corners(cameraFromObject, bound6, c);
+    float w[4];
+    EffectiveScreenWindow(options, w);
+    const ScreenDepth scale = ScreenDepthOf(options);
+    float lo[2] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+    float hi[2] = {-lo[0], -lo[1]};
+    for (const V3f& p : c) {
+        if (scale.perspective && p.z <= 0) return std::numeric_limits<float>::infinity();
+        const float s[2] = {p.x / scale(p), p.y / scale(p)};
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
+    }
+    // Screen to raster: the window spans the resolution.
+    return (hi[0] - lo[0]) / (w[1] - w[0]) * options.xres * (hi[1] - lo[1]) / (w[3] - w[2]) *
+           options.yres;
+}
+
 bool BoxInViewFrustum(const Options& options, const Imath::M44f& cameraFromObject,
                       const float bound6[6], float* detail) {
     V3f c[8];
     Corners(cameraFromObject, bound6, c);
     float w[4];
     EffectiveScreenWindow(options, w);
-    const bool perspective = options.projection == "perspective";
-    // Screen coordinates are x / (z tan(fov/2)) under perspective, x itself otherwise; the
-    // frustum's sides are the screen window's edges, scaled by depth under perspective.
-    const float t = perspective ? std::tan(options.fov * kPiF / 360.f) : 1;
-    const auto scale = [&](const V3f& p) { return perspective ? t * p.z : 1.f; };
+    const ScreenDepth scale = ScreenDepthOf(options);
+    // The frustum's sides are the screen window's edges, scaled by depth under perspective.
     if (AllOutside(c, [&](const V3f& p) { return p.z - options.nearClip; }) ||
         AllOutside(c, [&](const V3f& p) { return options.farClip - p.z; }) ||
         AllOutside(c, [&](const V3f& p) { return p.x - w[0] * scale(p); }) ||
@@ -57,17 +89,7 @@ bool BoxInViewFrustum(const Options& options, const Imath::M44f& cameraFromObjec
         AllOutside(c, [&](const V3f& p) { return p.y - w[2] * scale(p); }) ||
         AllOutside(c, [&](const V3f& p) { return w[3] * scale(p) - p.y; }))
         return false;
-    *detail = std::numeric_limits<float>::infinity();
-    float lo[2] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
-    float hi[2] = {-lo[0], -lo[1]};
-    for (const V3f& p : c) {
-        if (perspective && p.z <= 0) return true;
-        const float s[2] = {p.x / scale(p), p.y / scale(p)};
-        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
-    }
-    // Screen to raster: the window spans the resolution.
-    *detail = (hi[0] - lo[0]) / (w[1] - w[0]) * options.xres * (hi[1] - lo[1]) / (w[3] - w[2]) *
-              options.yres;
+    *detail = BoxDetail(options, cameraFromObject, bound6);
     return true;
 }
 

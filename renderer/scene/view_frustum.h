@@ -1,7 +1,8 @@
 #pragma once
 // What the camera of a frame can see, for decisions made while the scene is built: whether a
 // Procedural's bound lies inside the viewing frustum (a DelayedReadArchive outside it is never
-// read) and how large it appears (the detail a RunProgram program is told, RISpec 3.2 §5.7).
+// read) and how large it appears (the detail a RunProgram program is told, RISpec 3.2 §5.7, and
+// the level of detail of Detail and DetailRange).
 
 #include <Imath/ImathMatrix.h>
 
@@ -20,5 +21,7 @@ void EffectiveScreenWindow(const Options& options, float window[4]);
 // the box reaches behind the eye.
 bool BoxInViewFrustum(const Options& options, const Imath::M44f& cameraFromObject,
                       const float bound6[6], float* detail);
+// That area alone, whether or not the camera sees the box (the detail of RISpec's Detail).
+float BoxDetail(const Options& options, const Imath::M44f& cameraFromObject, const float bound6[6]);
 
 }  // namespace gonio
