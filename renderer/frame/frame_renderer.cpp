@@ -49,6 +49,7 @@ struct SampleState {
     // Seeds the random() streams of the points this sample hits: a hash of the render's seed,
     // the pixel and the sample, mixed on at each layer.
     uint64_t randomSeed = 0;
+    int layers = 0;  // how many times its ray has looked for its next hit
     // The AOVs, composited front to back like the colour (empty when no Display asks for one).
     std::vector<float> outputs;
 };
@@ -172,6 +173,10 @@ class TileRenderer {
     ShadingPointSharing sharing_;
     PathWorker* paths_;
     std::vector<float> radiance_;
+    // TraceAndShade's first hits of the tile's camera rays.
+    std::vector<RayScene::CoherentRay> coherentRays_;
+    std::vector<RayHit> firstHits_;
+    std::vector<uint8_t> firstFound_;
     uint64_t cameraRays_ = 0;  // all this renderer's tiles'; the path tracer counts its own
 };
 
@@ -237,17 +242,34 @@ void TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& gen
 }
 
 void TileRenderer::TraceAndShade() {
+    // Every sample's first hit together (neighbouring samples' rays share most of their way
+    // through the scene), the layers behind it ray by ray.
+    const int count = int(samples_.size());
+    coherentRays_.resize(size_t(count));
+    firstHits_.resize(size_t(count));
+    firstFound_.resize(size_t(count));
+    for (int i = 0; i < count; ++i) {
+        const CameraRay& ray = samples_[size_t(i)].ray;
+        coherentRays_[size_t(i)] = {ray.org, ray.dir, ray.tnear, ray.tfar, ray.time};
+    }
+    scene_.IntersectCoherent(count, coherentRays_.data(), firstHits_.data(), firstFound_.data());
+    cameraRays_ += uint64_t(count);
     layers_.Trace(
-        int(samples_.size()),
+        count,
         [&](int i, SurfacePoint* sp, TransparentLayers::Hit* hit) {
             SampleState& sample = samples_[size_t(i)];
             CameraRay& ray = sample.ray;
             hit->tnear = ray.tnear;
             // Only the hits ShadeGroup shades need the rest (FinishEvaluate): with ShadingRate
             // sharing, about one in xsamples·ysamples.
-            if (!NextVisibleHit(scene_, ray.org, ray.dir, ray.time, ray.tfar, &ray.tnear, sp,
-                                &hit->t, &cameraRays_, HitEvaluation::kGeometry))
-                return false;
+            const bool found =
+                sample.layers++ == 0
+                    ? NextVisibleHitFrom(firstFound_[size_t(i)] ? &firstHits_[size_t(i)] : nullptr,
+                                         scene_, ray.org, ray.dir, ray.time, ray.tfar, &ray.tnear,
+                                         sp, &hit->t, &cameraRays_, HitEvaluation::kGeometry)
+                    : NextVisibleHit(scene_, ray.org, ray.dir, ray.time, ray.tfar, &ray.tnear, sp,
+                                     &hit->t, &cameraRays_, HitEvaluation::kGeometry);
+            if (!found) return false;
             if (std::isinf(sample.depth)) sample.depth = hit->t;
             return true;
         },

@@ -5,6 +5,7 @@
 
 #include <Imath/ImathVec.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,6 +65,15 @@ class RayScene {
     // the combined solid's surface, whether the ray starts outside or inside it.
     bool Intersect(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
                    float time, RayHit* hit) const;
+    // Intersect for each of `count` rays that leave about one point in about one direction
+    // (camera rays of neighbouring samples): found[i] says whether rays[i] hit, hits[i] where.
+    // Embree traverses them 8 at a time, sharing the work of the nodes they all pass through;
+    // frames with solids or archives not yet read take them one by one.
+    struct CoherentRay {
+        Imath::V3f org, dir;
+        float tnear, tfar, time;
+    };
+    void IntersectCoherent(int count, const CoherentRay* rays, RayHit* hits, uint8_t* found) const;
     // Whether anything lies on org + t·dir for tnear <= t <= tfar at `time`.
     bool Occluded(const Imath::V3f& org, const Imath::V3f& dir, float tnear, float tfar,
                   float time) const;

@@ -144,6 +144,9 @@ struct RayScene::Impl {
     // The nearest hit in one level's Embree scene (`top` or `solids`).
     bool Trace(const SceneLevel& level, const V3f& org, const V3f& dir, float tnear, float tfar,
                float time, RayHit* hit) const;
+    // Embree's hit of a ray found in `level` as a RayHit (Trace and IntersectCoherent).
+    void MakeHit(const SceneLevel& level, float tfar, float time, unsigned geomID, unsigned primID,
+                 unsigned instID, float u, float v, const V3f& ng, RayHit* hit) const;
     // The nearest point of a combined solid's surface within [tnear, tfar].
     bool IntersectSolids(const V3f& org, const V3f& dir, float tnear, float tfar, float time,
                          RayHit* hit) const;

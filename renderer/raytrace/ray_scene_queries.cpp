@@ -1,6 +1,7 @@
 // Rays through a RayScene: the nearest hit and occlusion, with solids (SolidBegin) combined
 // from the crossings a ray collects with their surfaces.
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -24,19 +25,25 @@ bool RayScene::Impl::Trace(const SceneLevel& level, const V3f& org, const V3f& d
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(level.scene, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    hit->t = rh.ray.tfar;
+    MakeHit(level, rh.ray.tfar, time, rh.hit.geomID, rh.hit.primID, rh.hit.instID[0], rh.hit.u,
+            rh.hit.v, V3f(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), hit);
+    return true;
+}
+
+void RayScene::Impl::MakeHit(const SceneLevel& level, float tfar, float time, unsigned geomID,
+                             unsigned primID, unsigned instID, float u, float v, const V3f& ng,
+                             RayHit* hit) const {
+    hit->t = tfar;
     hit->time = time;
-    hit->geomID = rh.hit.geomID;
-    hit->primID = rh.hit.primID;
-    hit->instID = &level == &solids ? kSolidLevel : rh.hit.instID[0];
-    hit->u = rh.hit.u;
-    hit->v = rh.hit.v;
+    hit->geomID = geomID;
+    hit->primID = primID;
+    hit->instID = &level == &solids ? kSolidLevel : instID;
+    hit->u = u;
+    hit->v = v;
     hit->flipNormal = false;
-    const V3f ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
     const bool quadric = RecordOf(*hit).quadric != nullptr;
     hit->Ng = quadric ? V3f(0) : ng;
     hit->objectP = quadric ? ng : V3f(0);  // QuadricIntersect's point
-    return true;
 }
 
 bool RayScene::Impl::Enters(const RayHit& hit, const V3f& org, const V3f& dir) const {
@@ -84,6 +91,51 @@ bool RayScene::Intersect(const V3f& org, const V3f& dir, float tnear, float tfar
     // hit passes through.
     if (impl_->lazyScene) impl_->MarkLazyProcedurals(org, dir, tnear, found ? hit->t : tfar, time);
     return found;
+}
+
+void RayScene::IntersectCoherent(int count, const CoherentRay* rays, RayHit* hits,
+                                 uint8_t* found) const {
+    const Impl& s = *impl_;
+    if (!s.top.scene || s.trees || s.lazyScene) {
+        for (int i = 0; i < count; ++i) {
+            const CoherentRay& r = rays[i];
+            found[i] = Intersect(r.org, r.dir, r.tnear, r.tfar, r.time, &hits[i]);
+        }
+        return;
+    }
+    // AVX2's width: Embree's 8-wide packet traversal on the CPUs it targets.
+    constexpr int kPacket = 8;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (int first = 0; first < count; first += kPacket) {
+        const int n = std::min(kPacket, count - first);
+        alignas(32) int valid[kPacket];
+        alignas(32) RTCRayHit8 packet;
+        for (int k = 0; k < kPacket; ++k) {
+            valid[k] = k < n ? -1 : 0;
+            const CoherentRay& r = rays[first + std::min(k, n - 1)];
+            packet.ray.org_x[k] = r.org.x, packet.ray.org_y[k] = r.org.y;
+            packet.ray.org_z[k] = r.org.z;
+            packet.ray.dir_x[k] = r.dir.x, packet.ray.dir_y[k] = r.dir.y;
+            packet.ray.dir_z[k] = r.dir.z;
+            packet.ray.tnear[k] = r.tnear, packet.ray.tfar[k] = r.tfar;
+            packet.ray.time[k] = s.EmbreeTime(r.time);
+            packet.ray.mask[k] = ~0u, packet.ray.id[k] = 0, packet.ray.flags[k] = 0;
+            packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+            packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect8(valid, s.top.scene, &context, &packet);
+        for (int k = 0; k < n; ++k) {
+            const int i = first + k;
+            found[i] = packet.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+            if (!found[i]) continue;
+            s.MakeHit(s.top, packet.ray.tfar[k], rays[i].time, packet.hit.geomID[k],
+                      packet.hit.primID[k], packet.hit.instID[0][k], packet.hit.u[k],
+                      packet.hit.v[k],
+                      V3f(packet.hit.Ng_x[k], packet.hit.Ng_y[k], packet.hit.Ng_z[k]), &hits[i]);
+        }
+    }
 }
 
 bool RayScene::Occluded(const V3f& org, const V3f& dir, float tnear, float tfar, float time) const {

@@ -36,6 +36,11 @@ enum class HitEvaluation { kFull, kGeometry };
 bool NextVisibleHit(const RayScene& scene, const Imath::V3f& org, const Imath::V3f& dir, float time,
                     float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays,
                     HitEvaluation evaluation = HitEvaluation::kFull);
+// The same for a ray whose nearest hit beyond *tnear is known already (`first`, or null where
+// there is none: RayScene::IntersectCoherent), which *rays counted when it was traced.
+bool NextVisibleHitFrom(const RayHit* first, const RayScene& scene, const Imath::V3f& org,
+                        const Imath::V3f& dir, float time, float tfar, float* tnear,
+                        SurfacePoint* sp, float* t, uint64_t* rays, HitEvaluation evaluation);
 
 // One layer composited front to back over n components: colour += T·Ci (not for a matte
 // surface, which hides what is behind it and adds nothing, RISpec §4.2.5), then
