@@ -52,13 +52,16 @@ void QuadricBounds(const RTCBoundsFunctionArguments* args) {
 bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, unsigned i, float* t,
                          V3f* objectP) {
     const M44f& m = q->objectFromSpace;
+    const float ox = RTCRayN_org_x(rays, N, i), oy = RTCRayN_org_y(rays, N, i),
+                oz = RTCRayN_org_z(rays, N, i);
+    const float dx = RTCRayN_dir_x(rays, N, i), dy = RTCRayN_dir_y(rays, N, i),
+                dz = RTCRayN_dir_z(rays, N, i);
     // An affine map keeps the ray parameter: t is the same in object space.
-    return q->quadric->IntersectPoint(
-        AffinePoint(m, RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i),
-                    RTCRayN_org_z(rays, N, i)),
-        AffineVector(m, RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i),
-                     RTCRayN_dir_z(rays, N, i)),
-        RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i), t, objectP);
+    const V3f org = q->translationOnly ? V3f(ox + m[3][0], oy + m[3][1], oz + m[3][2])
+                                       : AffinePoint(m, ox, oy, oz);
+    const V3f dir = q->translationOnly ? V3f(dx, dy, dz) : AffineVector(m, dx, dy, dz);
+    return q->quadric->IntersectPoint(org, dir, RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i),
+                                      t, objectP);
 }
 
 void QuadricIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -148,8 +151,12 @@ RTCGeometry RayScene::Impl::MakeMesh(const TriangleMesh& mesh, const M44f& m) {
 }
 
 RTCGeometry RayScene::Impl::MakeQuadric(GeometryRecord& record, const QuadricShape& shape) {
-    record.quadric = std::make_unique<QuadricGeometry>(
-        QuadricGeometry{shape.quadric.get(), record.objectFromSpace, record.spaceFromObject});
+    const M44f& m = record.objectFromSpace;
+    bool translationOnly = true;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) translationOnly &= m[r][c] == (r == c ? 1.f : 0.f);
+    record.quadric = std::make_unique<QuadricGeometry>(QuadricGeometry{
+        shape.quadric.get(), record.objectFromSpace, record.spaceFromObject, translationOnly});
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(g, 1);
     rtcSetGeometryUserData(g, record.quadric.get());

@@ -26,6 +26,9 @@ struct QuadricGeometry {
     const Quadric* quadric;
     M44f objectFromSpace;
     M44f spaceFromObject;
+    // objectFromSpace only moves (its linear part is exactly the identity), as the transform of
+    // most quadrics does: the callback then only adds the offset, with the same result.
+    bool translationOnly;
 };
 
 // What we keep for each Embree geometry, to evaluate its hits.
