@@ -55,11 +55,10 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
                                                     : a.hit < b.hit;
     };
     shadedBy->assign(size_t(n), -1);
-    for (auto first = cells_.begin(); first != cells_.end();) {
-        auto last = first + 1;
-        while (last != cells_.end() && !cellBefore(*first, *last)) ++last;
-        std::sort(first, last, nearerTheCentre);
-        // The hits of one cell: each takes the first one before it that it can share with.
+    // The hits of one cell, in that order: each takes the first one before it that is shaded
+    // itself and that it can share with.
+    const auto share = [&](std::vector<CellEntry>::iterator first,
+                           std::vector<CellEntry>::iterator last) {
         for (auto i = first; i != last; ++i) {
             const int hit = i->hit;
             (*shadedBy)[hit] = hit;
@@ -71,6 +70,25 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
                     break;
                 }
             }
+        }
+    };
+    for (auto first = cells_.begin(); first != cells_.end();) {
+        auto last = first + 1;
+        while (last != cells_.end() && !cellBefore(*first, *last)) ++last;
+        // Sorting the cell is not needed for the usual cell, one surface: the hit nearest the
+        // centre comes first and every hit that can share with it does; only those that cannot
+        // (another surface, a fold) are sorted and shared among themselves. That is the same
+        // as sharing the whole sorted cell, as none of the others is shaded itself.
+        std::iter_swap(first, std::min_element(first, last, nearerTheCentre));
+        const int nearest = first->hit;
+        (*shadedBy)[nearest] = nearest;
+        auto rest = std::partition(first + 1, last, [&](const CellEntry& e) {
+            return CanShare(hits[e.hit], hits[nearest], cell);
+        });
+        for (auto i = first + 1; i != rest; ++i) (*shadedBy)[i->hit] = nearest;
+        if (rest != last) {
+            std::sort(rest, last, nearerTheCentre);
+            share(rest, last);
         }
         first = last;
     }

@@ -41,6 +41,16 @@ TEST_F(SharingTest, OneShadedPointPerPixelAtRateOne) {
     for (int i = 0; i < 32; ++i) EXPECT_EQ(shadedBy_[i], i < 16 ? 0 : 1) << i;
 }
 
+TEST_F(SharingTest, TwoSurfacesInAPixelEachShadeTheirSampleNearestTheCentre) {
+    // 4x4 samples, the left two columns on one shape, the right two on another: of the four
+    // samples nearest the centre (5, 6, 9, 10), 5 is the left's and 6 the right's first.
+    for (int s = 0; s < 16; ++s)
+        AddHit((s % 4 + 0.5f) / 4, (s / 4 + 0.5f) / 4, s % 4 < 2 ? &otherShape_ : &planeShape_);
+    Cluster(1);
+    ASSERT_EQ(shaded_, (std::vector<int>{5, 6}));
+    for (int s = 0; s < 16; ++s) EXPECT_EQ(shadedBy_[s], s % 4 < 2 ? 0 : 1) << s;
+}
+
 TEST_F(SharingTest, LargerRatesShareAcrossPixels) {
     for (int py = 0; py < 4; ++py)
         for (int px = 0; px < 4; ++px) AddHit(px + 0.5f, py + 0.5f, &planeShape_);
