@@ -174,8 +174,20 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     const Impl& s = *impl_;
     const Impl::ResolvedHit resolved = s.Resolve(hit);
     const GeometryRecord* record = resolved.record;
-    M44f worldFromSpace, spaceFromWorld;
-    Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
+    // At the top level the record's space is the world: only an instance's hit has transforms
+    // to make (every camera hit comes here, so the identities are not built and copied).
+    static const M44f kIdentity;
+    M44f worldFromSpace(Imath::UNINITIALIZED), spaceFromWorld(Imath::UNINITIALIZED);
+    M44f objectFromPlaced(Imath::UNINITIALIZED);
+    SurfacePoint& sp = *out;
+    if (resolved.placement) {
+        Impl::SpaceTransforms(resolved.placement, hit.time, &worldFromSpace, &spaceFromWorld);
+        sp.worldFromObject = record->spaceFromObject * worldFromSpace;
+        objectFromPlaced = spaceFromWorld * record->objectFromSpace;
+    } else {
+        sp.worldFromObject = record->spaceFromObject;
+    }
+    const M44f& objectFromWorld = resolved.placement ? objectFromPlaced : record->objectFromSpace;
     const V3f worldP = org + hit.t * dir;
     // A quadric without an N of its own may give its normal without (u, v) and the tangents,
     // which cost inverse trigonometry: they wait for FinishEvaluate, which with ShadingRate
@@ -189,20 +201,9 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
         object.geometry.Ng = object.N = pointNormal;
         object.geometry.dPdu = object.geometry.dPdv = V3f(0);
     } else {
-        object = s.EvaluateObject(*record, hit, worldP, dir, spaceFromWorld);
+        object = s.EvaluateObject(*record, hit, worldP, dir,
+                                  resolved.placement ? spaceFromWorld : kIdentity);
     }
-
-    // At the top level the record's space is the world (SpaceTransforms gives identities).
-    M44f placedWorldFromObject, placedObjectFromWorld;
-    if (resolved.placement) {
-        placedWorldFromObject = record->spaceFromObject * worldFromSpace;
-        placedObjectFromWorld = spaceFromWorld * record->objectFromSpace;
-    }
-    const M44f& worldFromObject =
-        resolved.placement ? placedWorldFromObject : record->spaceFromObject;
-    const M44f& objectFromWorld =
-        resolved.placement ? placedObjectFromWorld : record->objectFromSpace;
-    SurfacePoint& sp = *out;
     sp.shape = record->shape;
     sp.P = worldP;
     sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
@@ -215,7 +216,6 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
                : flip * Normalized(TransformNormal(objectFromWorld, object.N));
     sp.u = object.geometry.u, sp.v = object.geometry.v;
 
-    sp.worldFromObject = worldFromObject;
     sp.record = record;
     sp.primID = hit.primID;
     sp.hitU = hit.u, sp.hitV = hit.v;
