@@ -190,17 +190,23 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     const M44f& objectFromWorld = resolved.placement ? objectFromPlaced : record->objectFromSpace;
     const V3f worldP = org + hit.t * dir;
     // A quadric without an N of its own may give its normal without (u, v) and the tangents,
-    // which cost inverse trigonometry: they wait for FinishEvaluate, which with ShadingRate
-    // sharing only one camera hit in about xsamples·ysamples gets.
+    // which cost inverse trigonometry, and a mesh its normals without (u, v), the tangents and
+    // the stencils: they wait for FinishEvaluate, which with ShadingRate sharing only one
+    // camera hit in about xsamples·ysamples gets.
     const V3f pointNormal = record->quadric && record->quadricN < 0
                                 ? record->quadric->quadric->OrientedNormalAt(hit.objectP)
                                 : V3f(0);
-    const bool awaitsParameters = pointNormal != V3f(0);
+    const auto* mesh = std::get_if<TriangleMesh>(&record->shape->geometry);
     ObjectHit object;
-    if (awaitsParameters) {
+    if (pointNormal != V3f(0)) {
+        sp.pending = SurfacePoint::Pending::kQuadric;
         object.geometry.Ng = object.N = pointNormal;
         object.geometry.dPdu = object.geometry.dPdv = V3f(0);
+    } else if (mesh) {
+        sp.pending = SurfacePoint::Pending::kMesh;
+        object = EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v);
     } else {
+        sp.pending = SurfacePoint::Pending::kNothing;
         object = s.EvaluateObject(*record, hit, worldP, dir,
                                   resolved.placement ? spaceFromWorld : kIdentity);
     }
@@ -221,20 +227,22 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     sp.hitU = hit.u, sp.hitV = hit.v;
     sp.stencils = object.stencils;
     sp.attributes = resolved.attributes;
-    sp.awaitsParameters = awaitsParameters;
     sp.objectP = hit.objectP;
 }
 
 void RayScene::FinishEvaluate(SurfacePoint* out) const {
     SurfacePoint& sp = *out;
     const GeometryRecord* record = sp.record;
-    if (sp.awaitsParameters) {
+    if (sp.pending != SurfacePoint::Pending::kNothing) {
+        const ShapeGeometry& geometry = record->shape->geometry;
         const ObjectHit object =
-            EvaluateQuadricAt(std::get<QuadricShape>(record->shape->geometry), sp.objectP, nullptr);
+            sp.pending == SurfacePoint::Pending::kQuadric
+                ? EvaluateQuadricAt(std::get<QuadricShape>(geometry), sp.objectP, nullptr)
+                : EvaluateMesh(std::get<TriangleMesh>(geometry), sp.primID, sp.hitU, sp.hitV);
         sp.u = object.geometry.u, sp.v = object.geometry.v;
         sp.dPdu = object.geometry.dPdu, sp.dPdv = object.geometry.dPdv;
         sp.stencils = object.stencils;
-        sp.awaitsParameters = false;
+        sp.pending = SurfacePoint::Pending::kNothing;
     }
     sp.dPdu = TransformVector(sp.worldFromObject, sp.dPdu);
     sp.dPdv = TransformVector(sp.worldFromObject, sp.dPdv);

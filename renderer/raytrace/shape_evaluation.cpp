@@ -122,7 +122,7 @@ void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float
     }
 }
 
-ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
+ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
     const uint32_t* idx = &mesh.indices[3 * primID];
     const V3f& p0 = mesh.positions[idx[0]];
     const V3f& p1 = mesh.positions[idx[1]];
@@ -130,8 +130,32 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
     const float b0 = 1 - b1 - b2;
     ObjectHit hit;
     SurfaceGeometry& g = hit.geometry;
-    g.P = b0 * p0 + b1 * p1 + b2 * p2;
+    g.P = V3f(0);
+    g.dPdu = g.dPdv = V3f(0);
     g.Ng = SafeNormalize((p1 - p0).cross(p2 - p0), V3f(0, 0, 1));
+    hit.N = g.Ng;
+    if (!mesh.cornerNormals.empty()) {
+        const V3f* n = &mesh.cornerNormals[3 * primID];
+        hit.N = SafeNormalize(b0 * n[0] + b1 * n[1] + b2 * n[2], g.Ng);
+    } else if (!mesh.normals.empty()) {
+        hit.N = SafeNormalize(
+            b0 * mesh.normals[idx[0]] + b1 * mesh.normals[idx[1]] + b2 * mesh.normals[idx[2]],
+            g.Ng);
+    }
+    hit.stencils.uniform =
+        mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
+    return hit;
+}
+
+ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
+    ObjectHit hit = EvaluateMeshNormals(mesh, primID, b1, b2);
+    const uint32_t* idx = &mesh.indices[3 * primID];
+    const V3f& p0 = mesh.positions[idx[0]];
+    const V3f& p1 = mesh.positions[idx[1]];
+    const V3f& p2 = mesh.positions[idx[2]];
+    const float b0 = 1 - b1 - b2;
+    SurfaceGeometry& g = hit.geometry;
+    g.P = b0 * p0 + b1 * p1 + b2 * p2;
     if (!mesh.uv.empty()) {
         const V2f& t0 = mesh.uv[idx[0]];
         const V2f& t1 = mesh.uv[idx[1]];
@@ -150,17 +174,7 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
         g.u = b1, g.v = b2;
         g.dPdu = p1 - p0, g.dPdv = p2 - p0;
     }
-    hit.N = g.Ng;
-    if (!mesh.cornerNormals.empty()) {
-        const V3f* n = &mesh.cornerNormals[3 * primID];
-        hit.N = SafeNormalize(b0 * n[0] + b1 * n[1] + b2 * n[2], g.Ng);
-    } else if (!mesh.normals.empty()) {
-        hit.N = SafeNormalize(
-            b0 * mesh.normals[idx[0]] + b1 * mesh.normals[idx[1]] + b2 * mesh.normals[idx[2]],
-            g.Ng);
-    }
     ClassStencils& s = hit.stencils;
-    s.uniform = mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
     s.varying = s.vertex = Corners3(idx, b1, b2);
     const uint32_t corners[3] = {3 * primID, 3 * primID + 1, 3 * primID + 2};
     s.faceVarying = Corners3(corners, b1, b2);

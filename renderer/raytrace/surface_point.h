@@ -6,6 +6,7 @@
 #include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "renderer/raytrace/shape_evaluation.h"
@@ -29,9 +30,12 @@ struct SurfacePoint {
     unsigned primID = 0;
     float hitU = 0, hitV = 0;
     ClassStencils stencils;
-    // A sphere's camera hit (RayScene::EvaluateGeometry) has its normals from the point alone;
-    // u, v, dPdu, dPdv and the stencils follow from objectP in FinishEvaluate, if it is shaded.
-    bool awaitsParameters = false;
+    // What a camera hit (RayScene::EvaluateGeometry) leaves to FinishEvaluate, which only the
+    // hits that are shaded get: u, v, dPdu, dPdv and the interpolation stencils, from objectP
+    // for a sphere (whose normals came from the point alone), from primID, hitU and hitV for a
+    // mesh.
+    enum class Pending : uint8_t { kNothing, kQuadric, kMesh };
+    Pending pending = Pending::kNothing;
     Imath::V3f objectP;
 };
 
