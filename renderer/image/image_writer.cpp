@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 
 #include "imageio/image_formats.h"
 #include "renderer/image/basis_display.h"
@@ -139,16 +140,6 @@ struct PixelData {
     std::vector<unsigned char> bytes;
 };
 
-// Quantize ranges may reach below 0 or above the type (RISpec's example is -1024..3071); the
-// file's unsigned type clamps them.
-template <typename T>
-void StoreCodes(const std::vector<float>& codes, float largest, std::vector<unsigned char>& bytes) {
-    bytes.resize(codes.size() * sizeof(T));
-    T* out = reinterpret_cast<T*>(bytes.data());
-    for (size_t i = 0; i < codes.size(); ++i)
-        out[i] = T(std::min(std::max(codes[i], 0.0f), largest));
-}
-
 // Whether the integer codes of `channels` need 16 bits.
 bool NeedsSixteenBits(const std::vector<OutputChannel>& channels, const Quantization& colour,
                       const Quantization& depth) {
@@ -159,40 +150,52 @@ bool NeedsSixteenBits(const std::vector<OutputChannel>& channels, const Quantiza
     return false;
 }
 
-// Runs the imaging pipeline on every output value: a float file gets exposed colour, an integer
-// file the quantized codes.
-PixelData ComputePixels(const Image& image, const std::vector<OutputChannel>& channels,
-                        const Exposure& exposure, const Quantization& colour,
-                        const Quantization& depth, bool writeFloat) {
+// Runs the imaging pipeline on every output value into `bytes` as T: exposed colour for a float
+// file (T = float), the quantized codes clamped to [0, largest] for an integer one (Quantize
+// ranges may reach below 0 or above the type: RISpec's example is -1024..3071). Straight into
+// the file's type, as a float copy of a large frame would be most of a render's memory.
+template <class T>
+void StorePixels(const Image& image, const std::vector<OutputChannel>& channels,
+                 const Exposure& exposure, const Quantization& colour, const Quantization& depth,
+                 float largest, std::vector<unsigned char>& bytes) {
+    constexpr bool kFloat = std::is_same_v<T, float>;
     const int n = int(channels.size());
-    std::vector<float> values(size_t(image.width) * image.height * n);
+    bytes.resize(size_t(image.width) * image.height * n * sizeof(T));
+    T* const values = reinterpret_cast<T*>(bytes.data());
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             const float* in = image.At(x, y);
-            float* out = &values[(size_t(y) * image.width + x) * n];
+            T* out = &values[(size_t(y) * image.width + x) * n];
             for (int c = 0; c < n; ++c) {
                 const OutputChannel& channel = channels[c];
                 float v = in[channel.source];
                 if (channel.kind == ChannelKind::Colour) v = ApplyExposure(v, exposure);
-                if (!writeFloat) {
+                if constexpr (kFloat) {
+                    out[c] = v;
+                } else {
                     const Quantization& q = channel.kind == ChannelKind::Depth ? depth : colour;
-                    v = float(QuantizeValue(v, q, image.xorigin + x, image.yorigin + y, c));
+                    const float code =
+                        float(QuantizeValue(v, q, image.xorigin + x, image.yorigin + y, c));
+                    out[c] = T(std::min(std::max(code, 0.0f), largest));
                 }
-                out[c] = v;
             }
         }
     }
+}
+
+PixelData ComputePixels(const Image& image, const std::vector<OutputChannel>& channels,
+                        const Exposure& exposure, const Quantization& colour,
+                        const Quantization& depth, bool writeFloat) {
     PixelData data;
     if (writeFloat) {
         data.type = PixelType::Float;  // the driver converts to half where asked
-        data.bytes.resize(values.size() * sizeof(float));
-        std::copy(values.begin(), values.end(), reinterpret_cast<float*>(data.bytes.data()));
+        StorePixels<float>(image, channels, exposure, colour, depth, 0, data.bytes);
     } else if (NeedsSixteenBits(channels, colour, depth)) {
         data.type = PixelType::UInt16;
-        StoreCodes<uint16_t>(values, 65535.0f, data.bytes);
+        StorePixels<uint16_t>(image, channels, exposure, colour, depth, 65535.0f, data.bytes);
     } else {
         data.type = PixelType::UInt8;
-        StoreCodes<uint8_t>(values, 255.0f, data.bytes);
+        StorePixels<uint8_t>(image, channels, exposure, colour, depth, 255.0f, data.bytes);
     }
     return data;
 }
