@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace gonio {
 
@@ -247,20 +246,29 @@ void FilmTile::AddPixelSamples(int px, int py, int count, const float* positions
     }
 }
 
-// The sample counts for pixel q when -radius <= x - (q + 0.5) < radius; a separable filter's
-// weight is the product of the column's and the row's, 0 wherever either is.
-void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
-                                          const float* values) {
-    const Film& film = *film_;
-    const float xr = film.filter_.XRadius(), yr = film.filter_.YRadius();
-    Column* const column = columns_.data();
+// The sample counts for pixel q when -radius <= x - (q + 0.5) < radius.
+template <bool kKeepZeroWeights>
+inline int FilmTile::FindColumns(const Imath::Box2i& reach, float x) {
+    const float xr = film_->filter_.XRadius();
     int columns = 0;
     for (int qx = reach.min.x; qx <= reach.max.x; ++qx) {
         const float dx = x - (qx + 0.5f);
         if (dx < -xr || dx >= xr) continue;
-        const float weight = film.xWeight_(dx);
-        if (weight != 0.0f) column[columns++] = {qx - footprint_.min.x, dx, weight};
+        const float weight = film_->xWeight_(dx);
+        if (kKeepZeroWeights || weight != 0.0f)
+            columns_[size_t(columns++)] = {qx - footprint_.min.x, dx, weight};
     }
+    return columns;
+}
+
+// A separable filter's weight is the product of the column's and the row's, 0 wherever either
+// is.
+void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
+                                          const float* values) {
+    const Film& film = *film_;
+    const float yr = film.filter_.YRadius();
+    const Column* const column = columns_.data();
+    const int columns = FindColumns<false>(reach, x);
     // r g b a lead the channels (separableColourAndAlpha_).
     const double value[kColourAndAlpha] = {values[0], values[1], values[2], values[3]};
     double* const sums = sums_.data();
@@ -283,16 +291,12 @@ void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, fl
 
 void FilmTile::AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values) {
     const PixelFilter& filter = film_->Filter();
-    const float xr = filter.XRadius(), yr = filter.YRadius();
+    const float yr = filter.YRadius();
     const bool separable = filter.Separable(), keepNearest = !nearest_.empty();
-    int columns = 0;
-    for (int qx = reach.min.x; qx <= reach.max.x; ++qx) {
-        const float dx = x - (qx + 0.5f);
-        if (dx < -xr || dx >= xr) continue;
-        const float weight = film_->xWeight_(dx);
-        if (separable && weight == 0.0f && !keepNearest) continue;
-        columns_[size_t(columns++)] = {qx - footprint_.min.x, dx, weight};
-    }
+    // A column of weight 0 adds nothing to a separable filter's sums, but its pixels may still
+    // take the sample as their nearest, and a non-separable filter weighs it in two dimensions.
+    const int columns =
+        !separable || keepNearest ? FindColumns<true>(reach, x) : FindColumns<false>(reach, x);
     // All the values but depth.
     const int beforeDepth = depthChannel_ >= 0 ? depthChannel_ : channels_;
     std::copy(values, values + beforeDepth, values_.begin());

@@ -177,9 +177,13 @@ class FilmTile {
         return size_t(py - footprint_.min.y) * size_t(footprint_.max.x - footprint_.min.x + 1) +
                size_t(px - footprint_.min.x);
     }
-    // AddSample's two ways to splat a sample at (x, y) into the footprint pixels `reach`: the
-    // usual case (separableColourAndAlpha_), with nothing tested per pixel but the weight, and
-    // every other. Both add the same sums in the same order.
+    // Fills columns_ with the columns of `reach` that a sample at x falls within the filter's
+    // radius of (those of weight 0 only with kKeepZeroWeights); returns how many.
+    template <bool kKeepZeroWeights>
+    int FindColumns(const Imath::Box2i& reach, float x);
+    // AddPixelSamples' two ways to splat a sample at (x, y) into the footprint pixels `reach`:
+    // the usual case (separableColourAndAlpha_), with nothing tested per pixel but the weight,
+    // and every other. Both add the same sums in the same order.
     void AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
                                     const float* values);
     void AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values);
