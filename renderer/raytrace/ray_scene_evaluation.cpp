@@ -235,13 +235,18 @@ void RayScene::FinishEvaluate(SurfacePoint* out) const {
     const GeometryRecord* record = sp.record;
     if (sp.pending != SurfacePoint::Pending::kNothing) {
         const ShapeGeometry& geometry = record->shape->geometry;
-        const ObjectHit object =
-            sp.pending == SurfacePoint::Pending::kQuadric
-                ? EvaluateQuadricAt(std::get<QuadricShape>(geometry), sp.objectP, nullptr)
-                : EvaluateMesh(std::get<TriangleMesh>(geometry), sp.primID, sp.hitU, sp.hitV);
+        ObjectHit object;
+        if (sp.pending == SurfacePoint::Pending::kQuadric)
+            object = EvaluateQuadricAt(std::get<QuadricShape>(geometry), sp.objectP, nullptr);
+        else
+            EvaluateMeshParameters(std::get<TriangleMesh>(geometry), sp.primID, sp.hitU, sp.hitV,
+                                   &object);
         sp.u = object.geometry.u, sp.v = object.geometry.v;
         sp.dPdu = object.geometry.dPdu, sp.dPdv = object.geometry.dPdv;
-        sp.stencils = object.stencils;
+        // The uniform stencil came with the normals.
+        sp.stencils.varying = object.stencils.varying;
+        sp.stencils.vertex = object.stencils.vertex;
+        sp.stencils.faceVarying = object.stencils.faceVarying;
         sp.pending = SurfacePoint::Pending::kNothing;
     }
     sp.dPdu = TransformVector(sp.worldFromObject, sp.dPdu);

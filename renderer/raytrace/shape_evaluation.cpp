@@ -130,8 +130,7 @@ ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b
     const float b0 = 1 - b1 - b2;
     ObjectHit hit;
     SurfaceGeometry& g = hit.geometry;
-    g.P = V3f(0);
-    g.dPdu = g.dPdv = V3f(0);
+    g.P = g.dPdu = g.dPdv = V3f(0);
     g.Ng = SafeNormalize((p1 - p0).cross(p2 - p0), V3f(0, 0, 1));
     hit.N = g.Ng;
     if (!mesh.cornerNormals.empty()) {
@@ -147,8 +146,9 @@ ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b
     return hit;
 }
 
-ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
-    ObjectHit hit = EvaluateMeshNormals(mesh, primID, b1, b2);
+void EvaluateMeshParameters(const TriangleMesh& mesh, unsigned primID, float b1, float b2,
+                            ObjectHit* out) {
+    ObjectHit& hit = *out;
     const uint32_t* idx = &mesh.indices[3 * primID];
     const V3f& p0 = mesh.positions[idx[0]];
     const V3f& p1 = mesh.positions[idx[1]];
@@ -156,6 +156,7 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
     const float b0 = 1 - b1 - b2;
     SurfaceGeometry& g = hit.geometry;
     g.P = b0 * p0 + b1 * p1 + b2 * p2;
+    g.dPdu = g.dPdv = V3f(0);  // where the triangle's (u, v) are degenerate
     if (!mesh.uv.empty()) {
         const V2f& t0 = mesh.uv[idx[0]];
         const V2f& t1 = mesh.uv[idx[1]];
@@ -178,6 +179,11 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
     s.varying = s.vertex = Corners3(idx, b1, b2);
     const uint32_t corners[3] = {3 * primID, 3 * primID + 1, 3 * primID + 2};
     s.faceVarying = Corners3(corners, b1, b2);
+}
+
+ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
+    ObjectHit hit = EvaluateMeshNormals(mesh, primID, b1, b2);
+    EvaluateMeshParameters(mesh, primID, b1, b2, &hit);
     return hit;
 }
 

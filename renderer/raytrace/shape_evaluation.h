@@ -33,9 +33,12 @@ struct ObjectHit {
 
 // `primID`, (b1, b2): Embree's triangle and barycentrics.
 ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
-// Its normals and uniform stencil alone (EvaluateMesh's, bit for bit), which is what a hit that
-// may not be shaded needs; P, (u, v), the tangents and the other stencils are left zero.
+// EvaluateMesh in two parts: the normals and the uniform stencil, which is what a hit that may
+// not be shaded needs (P, (u, v) and the tangents are left zero), then P, (u, v), the tangents
+// and the other stencils.
 ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
+void EvaluateMeshParameters(const TriangleMesh& mesh, unsigned primID, float b1, float b2,
+                            ObjectHit* hit);
 // At a point the quadric's IntersectPoint reported (Quadric::EvaluateAt). `normals`: the
 // shape's N primitive variable, or null where it has none (found once per shape, not per hit).
 ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP,
