@@ -214,10 +214,6 @@ FilmTile::FilmTile(const Film& film, int index)
     depth_.assign(pixels, std::numeric_limits<float>::infinity());
 }
 
-// Each camera sample comes here, so the loops are kept lean: the columns in reach and their
-// weights are found once per sample, columns of weight 0 are skipped where they add nothing,
-// and the values are made doubles once. The sums are the same, added in the same order, as
-// weighting every pixel of the margin in turn.
 void FilmTile::AddSample(int px, int py, float x, float y, const float* values) {
     const float position[2] = {x, y};
     AddPixelSamples(px, py, 1, position, values);
@@ -236,14 +232,13 @@ void FilmTile::AddPixelSamples(int px, int py, int count, const float* positions
                              Imath::V2i(std::min(footprint_.max.x, px + film_->xmargin_),
                                         std::min(footprint_.max.y, py + film_->ymargin_)));
     if (reach.isEmpty()) return;
-    for (int i = 0; i < count; ++i) {
-        const float x = positions[2 * i], y = positions[2 * i + 1];
-        const float* sample = values + size_t(i) * channels_;
-        if (separableColourAndAlpha_)
-            AddSeparableColourAndAlpha(reach, x, y, sample);
-        else
-            AddAnyChannels(reach, x, y, sample);
+    if (separableColourAndAlpha_ && ColourAndAlphaFinite(count, values)) {
+        AddSeparableColourAndAlpha(reach, count, positions, values);
+        return;
     }
+    for (int i = 0; i < count; ++i)
+        AddAnyChannels(reach, positions[2 * i], positions[2 * i + 1],
+                       values + size_t(i) * channels_);
 }
 
 // The sample counts for pixel q when -radius <= x - (q + 0.5) < radius.
@@ -261,34 +256,85 @@ inline int FilmTile::FindColumns(const Imath::Box2i& reach, float x) {
     return columns;
 }
 
-// A separable filter's weight is the product of the column's and the row's, 0 wherever either
-// is.
-void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
-                                          const float* values) {
+bool FilmTile::ColourAndAlphaFinite(int count, const float* values) const {
+    bool finite = true;
+    for (int i = 0; i < count; ++i)
+        for (int c = 0; c < kColourAndAlpha; ++c)
+            finite &= std::isfinite(values[size_t(i) * channels_ + c]);
+    return finite;
+}
+
+// Fills weights[i] with the axis weight of sample i (at coordinates[i]) for the pixel centred
+// at `centre`, for all `padded` samples (a multiple of kFloat4Lanes): 0 for those beyond the
+// radius. The sample counts for the pixel when -radius <= d < radius, d its offset.
+void FilmTile::AxisWeights(const FilterTable& table, float radius, float centre,
+                           const float* coordinates, int padded, float* weights) {
+    for (int i = 0; i < padded; i += kFloat4Lanes) {
+        const Float4 d = Load4(coordinates + i) - centre;
+        Store4(table(d, (d >= -radius) & (d < radius)), weights + i);
+    }
+}
+
+// A pixel's samples all reach the same pixels, so each column's and each row's weights are
+// looked up once per sample, and a reach pixel sums the whole batch before touching sums_:
+// kFloat4Lanes partial sums in float, each over every kFloat4Lanes-th sample, added up in a fixed
+// order into the double sums. A separable filter's weight is the product of the column's and the
+// row's. A sample of weight 0 adds 0 to every sum: its values are finite (AddPixelSamples sends a
+// batch with an infinite or NaN value, which must not turn a pixel out of the sample's reach into
+// NaN through 0·inf, the other way).
+void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, int count,
+                                          const float* positions, const float* values) {
+    const int padded = (count + kFloat4Lanes - 1) / kFloat4Lanes * kFloat4Lanes;
+    const int columns = reach.max.x - reach.min.x + 1, rows = reach.max.y - reach.min.y + 1;
+    // The batch, one array of `padded` floats each: x, y, r, g, b, a, then the weights of each
+    // column and each row. The padding has no position (NaN: weight 0) and colour 0.
+    batch_.resize(size_t(2 + kColourAndAlpha + columns + rows) * size_t(padded));
+    const auto array = [&](int a) { return batch_.data() + size_t(a) * size_t(padded); };
+    float *const xs = array(0), *const ys = array(1), *const colour = array(2);
+    float* const xWeights = array(2 + kColourAndAlpha);
+    float* const yWeights = array(2 + kColourAndAlpha + columns);
+    for (int i = 0; i < padded; ++i) {
+        const bool sample = i < count;
+        xs[i] = sample ? positions[2 * i] : std::numeric_limits<float>::quiet_NaN();
+        ys[i] = sample ? positions[2 * i + 1] : std::numeric_limits<float>::quiet_NaN();
+        for (int c = 0; c < kColourAndAlpha; ++c)
+            colour[size_t(c) * padded + i] = sample ? values[size_t(i) * channels_ + c] : 0;
+    }
     const Film& film = *film_;
-    const float yr = film.filter_.YRadius();
-    const Column* const column = columns_.data();
-    const int columns = FindColumns<false>(reach, x);
-    // r g b a lead the channels (separableColourAndAlpha_).
-    const double value[kColourAndAlpha] = {values[0], values[1], values[2], values[3]};
-    double* const sums = sums_.data();
-    const size_t width = size_t(footprint_.max.x - footprint_.min.x + 1);
+    for (int k = 0; k < columns; ++k)
+        AxisWeights(film.xWeight_, film.filter_.XRadius(), float(reach.min.x + k) + 0.5f, xs,
+                    padded, xWeights + size_t(k) * padded);
+    for (int j = 0; j < rows; ++j)
+        AxisWeights(film.yWeight_, film.filter_.YRadius(), float(reach.min.y + j) + 0.5f, ys,
+                    padded, yWeights + size_t(j) * padded);
+
     constexpr size_t kStride = 2 + kColourAndAlpha;
-    for (int qy = reach.min.y; qy <= reach.max.y; ++qy) {
-        const float dy = y - (qy + 0.5f);
-        if (dy < -yr || dy >= yr) continue;
-        const float yWeight = film.yWeight_(dy);
-        if (yWeight == 0.0f) continue;
-        double* const row = sums + size_t(qy - footprint_.min.y) * width * kStride;
+    const size_t width = size_t(footprint_.max.x - footprint_.min.x + 1);
+    for (int j = 0; j < rows; ++j) {
+        double* const row = sums_.data() + (size_t(reach.min.y + j - footprint_.min.y) * width +
+                                            size_t(reach.min.x - footprint_.min.x)) *
+                                               kStride;
+        const float* const yw = yWeights + size_t(j) * padded;
         for (int k = 0; k < columns; ++k) {
-            const float w = column[k].weight * yWeight;
-            if (w != 0.0f)
-                AddWeighted<kColourAndAlpha>(w, value, kColourAndAlpha,
-                                             row + size_t(column[k].offset) * kStride);
+            const float* const xw = xWeights + size_t(k) * padded;
+            Float4 lanes[kStride] = {};
+            for (int i = 0; i < padded; i += kFloat4Lanes) {
+                const Float4 w = Load4(xw + i) * Load4(yw + i);
+                lanes[0] += w;
+                lanes[1] += Abs4(w);
+                for (int c = 0; c < kColourAndAlpha; ++c)
+                    lanes[2 + c] += w * Load4(colour + size_t(c) * padded + i);
+            }
+            double* const sum = row + size_t(k) * kStride;
+            for (size_t s = 0; s < kStride; ++s) sum[s] += Sum4(lanes[s]);
         }
     }
 }
 
+// The general case, a sample at a time: the columns in reach and their weights are found once
+// per sample, columns of weight 0 are skipped where they add nothing, and the values are made
+// doubles once. The sums are the same, added in the same order, as weighting every pixel of
+// the margin in turn.
 void FilmTile::AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values) {
     const PixelFilter& filter = film_->Filter();
     const float yr = filter.YRadius();

@@ -166,8 +166,9 @@ class FilmTile {
     // Adds a sample of pixel (px, py) taken at raster position (x, y), with Spec().channels
     // values. A sample of a pixel outside the tile is dropped.
     void AddSample(int px, int py, float x, float y, const float* values);
-    // Adds `count` samples of pixel (px, py) at once, the same as adding them in turn:
-    // `positions` holds their (x, y), `values` their Spec().channels values each.
+    // Adds `count` samples of pixel (px, py) at once, the same as adding them in turn (up to
+    // rounding: the usual filters sum the batch in float first): `positions` holds their
+    // (x, y), `values` their Spec().channels values each.
     void AddPixelSamples(int px, int py, int count, const float* positions, const float* values);
 
   private:
@@ -181,11 +182,14 @@ class FilmTile {
     // radius of (those of weight 0 only with kKeepZeroWeights); returns how many.
     template <bool kKeepZeroWeights>
     int FindColumns(const Imath::Box2i& reach, float x);
-    // AddPixelSamples' two ways to splat a sample at (x, y) into the footprint pixels `reach`:
-    // the usual case (separableColourAndAlpha_), with nothing tested per pixel but the weight,
-    // and every other. Both add the same sums in the same order.
-    void AddSeparableColourAndAlpha(const Imath::Box2i& reach, float x, float y,
+    // AddPixelSamples' two ways to splat into the footprint pixels `reach`: the usual case
+    // (separableColourAndAlpha_), a pixel's samples at once, and every other, a sample at
+    // (x, y) at a time.
+    void AddSeparableColourAndAlpha(const Imath::Box2i& reach, int count, const float* positions,
                                     const float* values);
+    bool ColourAndAlphaFinite(int count, const float* values) const;
+    static void AxisWeights(const FilterTable& table, float radius, float centre,
+                            const float* coordinates, int padded, float* weights);
     void AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values);
     // Makes a sample at squared distance `distance` from the pixel's centre its nearest one, if
     // it is nearer than the one kept.
@@ -209,8 +213,8 @@ class FilmTile {
     bool separableColourAndAlpha_ = false;
     size_t Stride() const { return 2 + size_t(filtered_); }  // doubles a pixel in sums_
 
-    // Scratch for AddSample, sized once: the columns of pixels px - xmargin .. px + xmargin that
-    // a sample reaches, with its offset from and weight for each, and its filtered channels'
+    // Scratch for AddAnyChannels, sized once: the columns of pixels px - xmargin .. px + xmargin
+    // that a sample reaches, with its offset from and weight for each, and its filtered channels'
     // values as doubles.
     struct Column {
         int offset;  // of the column from footprint_.min.x
@@ -218,6 +222,8 @@ class FilmTile {
     };
     std::vector<Column> columns_;
     std::vector<double> values_;
+    // AddSeparableColourAndAlpha's scratch: the batch's column and row weights and its colours.
+    std::vector<float> batch_;
 };
 
 }  // namespace gonio

@@ -30,12 +30,23 @@ struct TestSample {
 };
 
 // Splats each sample into the tile of its pixel, tiles in parallel (in whatever order threads
-// take them), as the renderer does.
+// take them), as the renderer does: a run of samples of one pixel together.
 void Splat(Film& film, const std::vector<TestSample>& samples) {
     tbb::parallel_for(0, film.TileCount(), [&](int tile) {
         FilmTile filmTile = film.StartTile(tile);
-        for (const TestSample& s : samples)
-            filmTile.AddSample(s.px, s.py, s.x, s.y, s.values.data());
+        std::vector<float> positions, values;
+        for (size_t first = 0, next; first < samples.size(); first = next) {
+            positions.clear(), values.clear();
+            for (next = first; next < samples.size() && samples[next].px == samples[first].px &&
+                               samples[next].py == samples[first].py;
+                 ++next) {
+                positions.insert(positions.end(), {samples[next].x, samples[next].y});
+                values.insert(values.end(), samples[next].values.begin(),
+                              samples[next].values.end());
+            }
+            filmTile.AddPixelSamples(samples[first].px, samples[first].py, int(next - first),
+                                     positions.data(), values.data());
+        }
         film.StoreTile(std::move(filmTile));
     });
 }
@@ -169,6 +180,29 @@ TEST(Film, SingleSampleSpreadsAsTheFilterSays) {
     }
     EXPECT_NEAR(total, 1.0, 1e-5);  // the sample's energy is kept
     EXPECT_GT(image.At(4, 3)[0], image.At(3, 3)[0]);
+}
+
+// A pixel's samples go to the film together, but each reaches only the pixels within its own
+// filter radius: an infinite sample leaves a neighbour that only its batch-mates reach finite.
+TEST(Film, ASampleOutOfReachAddsNothingToItsBatchMatesPixels) {
+    const PixelFilter filter = MakeFilter("gaussian", 2, 2);  // radius 1
+    const FilmSpec spec = SmallSpec(3, 1, 2, 1, 4);
+    Film film(spec, filter);
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<TestSample> samples;
+    for (int px = -1; px <= 3; ++px)
+        for (int s = 0; s < 2; ++s)
+            samples.push_back({px,
+                               0,
+                               px + (s == 0 ? 0.1f : 0.9f),
+                               0.5f,
+                               {px == 1 && s == 0 ? inf : 1.0f, 1, 1, 1}});
+    Splat(film, samples);
+    const Image image = film.Resolve();
+    // Pixel 1's first sample (at 1.1) lies 1.4 from pixel 2's centre, beyond the radius.
+    EXPECT_EQ(image.At(1, 0)[0], inf);
+    EXPECT_FLOAT_EQ(image.At(2, 0)[0], 1.0f);
+    EXPECT_EQ(image.At(0, 0)[0], inf);  // 0.6 from pixel 0's centre: within reach
 }
 
 // The film's size grows with the window and the filter's margin, so that a render can refuse

@@ -45,5 +45,32 @@ TEST(FilterTable, MatchesEveryFilterOverItsFootprint) {
     }
 }
 
+// The four-lane lookup the film's splat uses gives the scalar one's weights exactly, lane by
+// lane, and 0 where a lane is out of reach, beyond the radius, or not a number.
+TEST(FilterTable, FourLanesAreFourScalarLookups) {
+    std::string error;
+    const auto filter = PixelFilter::FromRib("gaussian", 2, 2, error);
+    ASSERT_TRUE(filter) << error;
+    const FilterTable table(filter->XRadius(), [&](float d) { return filter->XWeight(d); });
+    const float r = filter->XRadius();
+    for (int i = -300; i <= 300; ++i) {
+        const float d0 = r * (float(i) + 0.37f) / 201.f;  // up to 1.5 radii
+        const Float4 d = {d0, -0.5f * d0, 0.25f * d0 + 0.01f, -d0};
+        const Float4 weights = table(d, Int4{-1, -1, -1, -1});
+        for (int lane = 0; lane < kFloat4Lanes; ++lane)
+            ASSERT_EQ(weights[lane], table(d[lane])) << d[lane];
+        const Float4 masked = table(d, Int4{0, -1, 0, -1});
+        EXPECT_EQ(masked[0], 0.f);
+        EXPECT_EQ(masked[1], weights[1]);
+        EXPECT_EQ(masked[2], 0.f);
+    }
+    const float nan = std::nanf("");
+    const Float4 odd = table(Float4{nan, 0, 2 * r, -2 * r}, Int4{-1, -1, -1, -1});
+    EXPECT_EQ(odd[0], 0.f);
+    EXPECT_EQ(odd[1], table(0.f));
+    EXPECT_EQ(odd[2], 0.f);
+    EXPECT_EQ(odd[3], 0.f);
+}
+
 }  // namespace
 }  // namespace gonio
