@@ -35,7 +35,9 @@ int OutputFloats(const std::vector<ShaderOutput>& outputs) {
 }
 
 // One camera sample on its way through the scene: transparent surfaces let it go on, so its
-// colour is composited front to back over several layers of hits.
+// colour is composited front to back over several layers of hits. Trivially copyable (its
+// AOVs live in TileRenderer::sampleOutputs_), so a tile's samples are filled in place and
+// copied, never zeroed one by one.
 struct SampleState {
     CameraRay ray;
     int px, py;
@@ -50,8 +52,6 @@ struct SampleState {
     // the pixel and the sample, mixed on at each layer.
     uint64_t randomSeed = 0;
     int layers = 0;  // how many times its ray has looked for its next hit
-    // The AOVs, composited front to back like the colour (empty when no Display asks for one).
-    std::vector<float> outputs;
 };
 
 // The camera samples of a tile's pixels: stratified, one jittered sample in each cell of the
@@ -60,14 +60,15 @@ struct SampleState {
 class SampleGenerator {
   public:
     SampleGenerator(uint64_t seed, int xsamples, int ysamples, const Options& options,
-                    const Camera& camera, int outputFloats)
+                    const Camera& camera)
         : seed_(seed),
           xsamples_(xsamples),
           ysamples_(ysamples),
+          cellWidth_(1.0f / float(xsamples)),
+          cellHeight_(1.0f / float(ysamples)),
           shutterOpen_(options.shutterOpen),
           shutterLength_(std::max(0.f, options.shutterClose - options.shutterOpen)),
-          camera_(camera),
-          outputFloats_(outputFloats) {}
+          camera_(camera) {}
 
     void AddSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
         for (int py = pixels.min.y; py <= pixels.max.y; ++py)
@@ -80,16 +81,15 @@ class SampleGenerator {
     }
 
   private:
-    // Fills a new (default) sample s = sy * xsamples + sx of pixel (px, py).
+    // Fills a new (default) sample s = sy * xsamples + sx of pixel (px, py) in place.
     void FillSample(uint64_t pixelHash, int px, int py, int sx, int sy, int s,
                     SampleState* out) const {
         SampleRandom random(pixelHash, s);
         SampleState& sample = *out;
         sample.px = px, sample.py = py;
         sample.randomSeed = random.Seed();
-        if (outputFloats_ > 0) sample.outputs.assign(size_t(outputFloats_), 0.f);
-        sample.x = px + (sx + random.Next()) / xsamples_;
-        sample.y = py + (sy + random.Next()) / ysamples_;
+        sample.x = px + (sx + random.Next()) * cellWidth_;
+        sample.y = py + (sy + random.Next()) * cellHeight_;
         // Values nothing reads are not drawn (but skipped: the stream stays the same).
         if (camera_.HasLens())
             sample.lensU = random.Next(), sample.lensV = random.Next();
@@ -102,9 +102,9 @@ class SampleGenerator {
 
     uint64_t seed_;
     int xsamples_, ysamples_;
+    float cellWidth_, cellHeight_;  // of a sample's stratum, in pixels
     float shutterOpen_, shutterLength_;
     const Camera& camera_;
-    int outputFloats_;
 };
 
 // The samples of one tile, shaded layer by layer in batches that share attributes. One per
@@ -146,6 +146,8 @@ class TileRenderer {
     void ChooseShadedPoints(const Attributes& attributes, const std::vector<int>& members);
 
     std::vector<SampleState> samples_;
+    // Per sample, its AOVs (outputFloats_ each), composited front to back like the colour.
+    std::vector<float> sampleOutputs_;
     TransparentLayers layers_;  // a layer's hits, by sample: HitAt(k).ray
     ShadingBatch batch_;
     std::vector<float> Ci_, Oi_, outputValues_, filmPositions_, filmValues_;
@@ -234,6 +236,7 @@ void TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& gen
                           FilmTile* film) {
     samples_.clear();
     generator.AddSamples(pixels, &samples_);
+    sampleOutputs_.assign(samples_.size() * size_t(outputFloats_), 0.f);
     if (paths_)
         TracePaths();
     else
@@ -308,7 +311,8 @@ void TileRenderer::Splat(FilmTile* film) {
             values[kChannelB] = sample.colour[2];
             values[kChannelA] = sample.alpha;
             values[kChannelZ] = sample.depth;
-            std::copy(sample.outputs.begin(), sample.outputs.end(), values + kStandardChannelCount);
+            const float* outputs = &sampleOutputs_[(first + count) * size_t(outputFloats_)];
+            std::copy(outputs, outputs + outputFloats_, values + kStandardChannelCount);
         }
         film->AddPixelSamples(head.px, head.py, int(count), filmPositions_.data(),
                               filmValues_.data());
@@ -381,8 +385,9 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         sample.alpha += covered;
         // AOVs are not premultiplied: each layer adds its value weighted by the coverage it
         // adds, so an opaque surface's AOV is its value.
+        float* outputs = &sampleOutputs_[size_t(ray) * size_t(outputFloats_)];
         for (int k = 0; k < outputFloats_; ++k)
-            sample.outputs[k] += covered * outputValues_[r * outputFloats_ + k];
+            outputs[k] += covered * outputValues_[r * outputFloats_ + k];
     }
 }
 
@@ -541,8 +546,7 @@ bool RenderFrame(const Frame& frame, const RenderSettings& settings, Diagnostics
         std::unique_ptr<TileRenderer> renderer;
     };
     PerThread<ThreadState> threads;
-    const SampleGenerator generator(settings.seed, xsamples, ysamples, options, camera,
-                                    OutputFloats(outputs));
+    const SampleGenerator generator(settings.seed, xsamples, ysamples, options, camera);
     const auto renderTile = [&](int tile) {
         const Imath::Box2i pixels = film.TilePixels(tile);
         ThreadState& thread = threads.Local();

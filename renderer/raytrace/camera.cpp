@@ -38,6 +38,8 @@ Camera::Camera(const Options& options)
       nearClip_(options.nearClip),
       farClip_(options.farClip) {
     EffectiveScreenWindow(options, screen_);
+    screenPerPixel_[0] = (screen_[1] - screen_[0]) / float(xres_);
+    screenPerPixel_[1] = (screen_[3] - screen_[2]) / float(yres_);
     if (perspective_ && std::isfinite(options.fstop) && options.fstop > 0 &&
         options.focalLength > 0 && options.focalDistance > 0) {
         lensRadius_ = 0.5f * options.focalLength / options.fstop;
@@ -68,8 +70,8 @@ Imath::M44f Camera::RasterFromNdc() const {
 
 CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float lensV,
                               float time) const {
-    const float sx = screen_[0] + rasterX / xres_ * (screen_[1] - screen_[0]);
-    const float sy = screen_[3] - rasterY / yres_ * (screen_[3] - screen_[2]);
+    const float sx = screen_[0] + rasterX * screenPerPixel_[0];
+    const float sy = screen_[3] - rasterY * screenPerPixel_[1];
     Imath::V3f org(0, 0, 0), dir(0, 0, 1);
     if (perspective_) {
         dir = Imath::V3f(sx * tanHalfFov_, sy * tanHalfFov_, 1);

@@ -49,6 +49,7 @@ class Camera {
     float tanHalfFov_;
     float screen_[4];  // left right bottom top
     int xres_, yres_;
+    float screenPerPixel_[2];  // the screen window's width / xres and height / yres
     float nearClip_, farClip_;
     float lensRadius_ = 0, focalDistance_ = 0;
 };
