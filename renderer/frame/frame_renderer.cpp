@@ -212,11 +212,12 @@ void TileRenderer::ChooseShadedPoints(const Attributes& attributes,
 }
 
 void TileRenderer::ToRgb(const float* colour, float* rgb) const {
+    if (colorToRgb_.empty()) {
+        const int last = ncomps_ - 1;
+        rgb[0] = colour[0], rgb[1] = colour[std::min(1, last)], rgb[2] = colour[std::min(2, last)];
+        return;
+    }
     for (int c = 0; c < 3; ++c) {
-        if (colorToRgb_.empty()) {
-            rgb[c] = colour[std::min(c, ncomps_ - 1)];
-            continue;
-        }
         rgb[c] = 0;
         for (int i = 0; i < ncomps_; ++i) rgb[c] += colour[i] * colorToRgb_[3 * i + c];
     }
@@ -377,7 +378,8 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         OpacityToRgb(opacities, opacityRgb);
         float covered = 0;
         for (int c = 0; c < 3; ++c)
-            covered += sample.transmittance[c] * std::clamp(opacityRgb[c], 0.f, 1.f) / 3;
+            covered += sample.transmittance[c] * std::clamp(opacityRgb[c], 0.f, 1.f);
+        covered /= 3;
         if (CompositeLayer(3, rgb, opacityRgb, attributes->matte, sample.colour,
                            sample.transmittance) < kNegligibleTransmittance)
             layers_.Stop(ray);

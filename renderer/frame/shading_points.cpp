@@ -25,17 +25,18 @@ bool ShadingPointSharing::CanShare(const ShadingPointHit& hit, const ShadingPoin
     // Both sides of a two-sided sheet can show in one cell; they shade differently.
     if ((a.Ng.dot(hit.dir) < 0) != (b.Ng.dot(shaded.dir) < 0)) return false;
     if (a.N.dot(b.N) < kMinNormalCosine) return false;
-    const float footprint = footprintAt0_ + footprintPerDistance_ * shaded.t;
-    return (a.P - b.P).length() <= kDistanceInCells * cell * footprint;
+    const float reach =
+        kDistanceInCells * cell * (footprintAt0_ + footprintPerDistance_ * shaded.t);
+    return (a.P - b.P).length2() <= reach * reach;
 }
 
 void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, float shadingRate,
                                   std::vector<int>* shaded, std::vector<int>* shadedBy) {
     const int n = int(hits.size());
-    const float cell = std::sqrt(shadingRate);
+    const float cell = std::sqrt(shadingRate), cellsPerPixel = 1 / cell;
     cells_.resize(size_t(n));
     for (int i = 0; i < n; ++i) {
-        const float cx = hits[i].x / cell, cy = hits[i].y / cell;
+        const float cx = hits[i].x * cellsPerPixel, cy = hits[i].y * cellsPerPixel;
         const float fx = std::floor(cx), fy = std::floor(cy);
         const float dx = cx - fx - 0.5f, dy = cy - fy - 0.5f;
         cells_[i] = {(long long)fx, (long long)fy, dx * dx + dy * dy, i};

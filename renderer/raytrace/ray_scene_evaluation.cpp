@@ -169,6 +169,18 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     FinishEvaluate(out);
 }
 
+namespace {
+
+// A quadric camera hit's normal (OrientedNormalAt), ahead of its (u, v) and tangents.
+ObjectHit QuadricNormalOnly(const V3f& normal) {
+    ObjectHit object;
+    object.geometry.Ng = object.N = normal;
+    object.geometry.dPdu = object.geometry.dPdv = V3f(0);
+    return object;
+}
+
+}  // namespace
+
 void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hit,
                                 SurfacePoint* out) const {
     const Impl& s = *impl_;
@@ -197,19 +209,18 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
                                 ? record->quadric->quadric->OrientedNormalAt(hit.objectP)
                                 : V3f(0);
     const auto* mesh = std::get_if<TriangleMesh>(&record->shape->geometry);
-    ObjectHit object;
-    if (pointNormal != V3f(0)) {
-        sp.pending = SurfacePoint::Pending::kQuadric;
-        object.geometry.Ng = object.N = pointNormal;
-        object.geometry.dPdu = object.geometry.dPdv = V3f(0);
-    } else if (mesh) {
-        sp.pending = SurfacePoint::Pending::kMesh;
-        object = EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v);
-    } else {
-        sp.pending = SurfacePoint::Pending::kNothing;
-        object = s.EvaluateObject(*record, hit, worldP, dir,
-                                  resolved.placement ? spaceFromWorld : kIdentity);
-    }
+    sp.pending = pointNormal != V3f(0) ? SurfacePoint::Pending::kQuadric
+                 : mesh                ? SurfacePoint::Pending::kMesh
+                                       : SurfacePoint::Pending::kNothing;
+    // Made in place (no copy of the stencils and geometry: every camera hit comes here).
+    const ObjectHit object = [&] {
+        if (sp.pending == SurfacePoint::Pending::kMesh)
+            return EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v);
+        if (sp.pending == SurfacePoint::Pending::kNothing)
+            return s.EvaluateObject(*record, hit, worldP, dir,
+                                    resolved.placement ? spaceFromWorld : kIdentity);
+        return QuadricNormalOnly(pointNormal);
+    }();
     sp.shape = record->shape;
     sp.P = worldP;
     sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
@@ -225,7 +236,11 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     sp.record = record;
     sp.primID = hit.primID;
     sp.hitU = hit.u, sp.hitV = hit.v;
-    sp.stencils = object.stencils;
+    // A pending hit's other stencils come with FinishEvaluate.
+    if (sp.pending == SurfacePoint::Pending::kNothing)
+        sp.stencils = object.stencils;
+    else
+        sp.stencils.uniform = object.stencils.uniform;
     sp.attributes = resolved.attributes;
     sp.objectP = hit.objectP;
 }

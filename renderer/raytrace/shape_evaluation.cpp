@@ -35,9 +35,9 @@ Stencil Single(int index) {
     return s;
 }
 
-Imath::V3f SafeNormalize(const Imath::V3f& v, const Imath::V3f& fallback) {
+inline Imath::V3f SafeNormalize(const Imath::V3f& v, const Imath::V3f& fallback) {
     const float len = v.length();
-    return len > 0 ? v / len : fallback;
+    return len > 0 ? v * (1 / len) : fallback;
 }
 
 // A curve segment's centre, tangent and radius at its parameter t (geometry/shape.h: four

@@ -31,30 +31,26 @@ bool NextVisibleHitFrom(const RayHit* first, const RayScene& scene, const Imath:
     }
 }
 
-float CompositeLayer(int n, const float* Ci, const float* Oi, bool matte, float* colour,
-                     float* transmittance) {
-    float remaining = 0;
-    for (int c = 0; c < n; ++c) {
-        if (!matte) colour[c] += transmittance[c] * Ci[c];
-        transmittance[c] *= 1 - std::clamp(Oi[c], 0.f, 1.f);
-        remaining = std::max(remaining, transmittance[c]);
-    }
-    return remaining;
-}
-
 size_t TransparentLayers::GroupHits() {
     groupIndex_.clear();
     size_t used = 0;
+    // Neighbouring hits mostly share their attributes: the last group is tried before the map.
+    const Attributes* last = nullptr;
+    size_t lastGroup = 0;
     for (int k = 0; k < int(hits_.size()); ++k) {
         const Attributes* attributes = points_[size_t(k)].attributes;
-        auto [it, isNew] = groupIndex_.try_emplace(attributes, used);
-        if (isNew) {
-            if (used == groups_.size()) groups_.emplace_back();
-            groups_[used].attributes = attributes;
-            groups_[used].members.clear();
-            ++used;
+        if (k == 0 || attributes != last) {
+            auto [it, isNew] = groupIndex_.try_emplace(attributes, used);
+            if (isNew) {
+                if (used == groups_.size()) groups_.emplace_back();
+                groups_[used].attributes = attributes;
+                groups_[used].members.clear();
+                ++used;
+            }
+            last = attributes;
+            lastGroup = it->second;
         }
-        groups_[it->second].members.push_back(k);
+        groups_[lastGroup].members.push_back(k);
     }
     return used;
 }

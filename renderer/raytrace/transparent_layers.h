@@ -44,9 +44,18 @@ bool NextVisibleHitFrom(const RayHit* first, const RayScene& scene, const Imath:
 
 // One layer composited front to back over n components: colour += T·Ci (not for a matte
 // surface, which hides what is behind it and adds nothing, RISpec §4.2.5), then
-// T *= 1 − clamp(Oi, 0, 1). Returns the largest transmittance left.
-float CompositeLayer(int n, const float* Ci, const float* Oi, bool matte, float* colour,
-                     float* transmittance);
+// T *= 1 − clamp(Oi, 0, 1). Returns the largest transmittance left. Inline: every camera
+// sample's every layer comes here.
+inline float CompositeLayer(int n, const float* Ci, const float* Oi, bool matte, float* colour,
+                            float* transmittance) {
+    float remaining = 0;
+    for (int c = 0; c < n; ++c) {
+        if (!matte) colour[c] += transmittance[c] * Ci[c];
+        transmittance[c] *= 1 - std::clamp(Oi[c], 0.f, 1.f);
+        remaining = std::max(remaining, transmittance[c]);
+    }
+    return remaining;
+}
 
 class TransparentLayers {
   public:
