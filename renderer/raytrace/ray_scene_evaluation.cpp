@@ -212,8 +212,12 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     sp.pending = pointNormal != V3f(0) ? SurfacePoint::Pending::kQuadric
                  : mesh                ? SurfacePoint::Pending::kMesh
                                        : SurfacePoint::Pending::kNothing;
+    // A flat mesh's normal is Embree's, which it found with the hit.
+    const bool embreeNormal =
+        sp.pending == SurfacePoint::Pending::kMesh && record->embreeNgSign != 0;
     // Made in place (no copy of the stencils and geometry: every camera hit comes here).
     const ObjectHit object = [&] {
+        if (embreeNormal) return EvaluateMeshFace(*mesh, hit.primID);
         if (sp.pending == SurfacePoint::Pending::kMesh)
             return EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v);
         if (sp.pending == SurfacePoint::Pending::kNothing)
@@ -226,9 +230,13 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
     sp.dPdv = object.geometry.dPdv;
     const float flip = record->shape->flipNormals != hit.flipNormal ? -1.f : 1.f;
-    sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
+    const V3f spaceNg = record->embreeNgSign * hit.Ng;
+    sp.Ng = flip * Normalized(embreeNormal
+                                  ? (resolved.placement ? TransformNormal(spaceFromWorld, spaceNg)
+                                                        : spaceNg)
+                                  : TransformNormal(objectFromWorld, object.geometry.Ng));
     // N is Ng unless the primitive gives normals.
-    sp.N = object.N == object.geometry.Ng
+    sp.N = embreeNormal || object.N == object.geometry.Ng
                ? sp.Ng
                : flip * Normalized(TransformNormal(objectFromWorld, object.N));
     sp.u = object.geometry.u, sp.v = object.geometry.v;

@@ -395,8 +395,13 @@ void RayScene::Impl::AddShape(SceneLevel& level, const SceneShape& shape,
                                     : nullptr;
         if (index) *index = static_cast<int>(i);
     }
-    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry))
-        record->flatMesh = mesh->normals.empty() && mesh->cornerNormals.empty() && record->cs < 0;
+    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
+        const bool noNormals = mesh->normals.empty() && mesh->cornerNormals.empty();
+        record->flatMesh = noNormals && record->cs < 0;
+        const float det = record->spaceFromObject.determinant();
+        if (noNormals && shape.deformPositions.empty() && det != 0)
+            record->embreeNgSign = det > 0 ? 1.f : -1.f;
+    }
     if (const auto* quadric = std::get_if<QuadricShape>(&shape.geometry)) {
         if (const PrimVar* n = quadric->vars.Find("N"))
             record->quadricN = static_cast<int>(n - vars.data());

@@ -51,6 +51,12 @@ struct GeometryRecord {
     // variable): EvaluateLean needs nothing else.
     bool flatMesh = false;
     bool plainQuadric = false;
+    // A still triangle mesh without normals: its object-space face normal (p1 − p0) × (p2 − p0)
+    // carried into the record's space (the inverse transpose) points along Embree's Ng, the
+    // same cross product of the vertices as built there, times this sign: +1, or −1 where
+    // spaceFromObject mirrors (the cross product of mirrored edges turns round, the inverse
+    // transpose does not). 0 for every other shape, whose normal Evaluate derives itself.
+    float embreeNgSign = 0;
 };
 
 struct SceneLevel {

@@ -122,15 +122,22 @@ void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float
     }
 }
 
+ObjectHit EvaluateMeshFace(const TriangleMesh& mesh, unsigned primID) {
+    ObjectHit hit;
+    hit.geometry.P = hit.geometry.dPdu = hit.geometry.dPdv = hit.geometry.Ng = hit.N = V3f(0);
+    hit.stencils.uniform =
+        mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
+    return hit;
+}
+
 ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
     const uint32_t* idx = &mesh.indices[3 * primID];
     const V3f& p0 = mesh.positions[idx[0]];
     const V3f& p1 = mesh.positions[idx[1]];
     const V3f& p2 = mesh.positions[idx[2]];
     const float b0 = 1 - b1 - b2;
-    ObjectHit hit;
+    ObjectHit hit = EvaluateMeshFace(mesh, primID);
     SurfaceGeometry& g = hit.geometry;
-    g.P = g.dPdu = g.dPdv = V3f(0);
     g.Ng = SafeNormalize((p1 - p0).cross(p2 - p0), V3f(0, 0, 1));
     hit.N = g.Ng;
     if (!mesh.cornerNormals.empty()) {
@@ -141,8 +148,6 @@ ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b
             b0 * mesh.normals[idx[0]] + b1 * mesh.normals[idx[1]] + b2 * mesh.normals[idx[2]],
             g.Ng);
     }
-    hit.stencils.uniform =
-        mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
     return hit;
 }
 
