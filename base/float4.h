@@ -1,7 +1,8 @@
 #pragma once
 // Four floats in one SIMD register, through the vector extension GCC and Clang share (SSE on
 // x86-64, NEON on ARM): for loops over a pixel's samples that the compilers do not vectorise
-// on their own (reductions, table lookups). Comparisons give Int4 masks of all ones or zeros.
+// on their own (a sample's weights for the pixels it reaches). Comparisons give Int4 masks of all
+// ones or zeros.
 
 #include <cstdint>
 #include <cstring>
@@ -17,13 +18,10 @@ inline Float4 Load4(const float* p) {
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline void Store4(Float4 v, float* p) { std::memcpy(p, &v, sizeof v); }
 inline Float4 Abs4(Float4 v) { return Float4(Int4(v) & 0x7fffffff); }
 // Where mask holds, a's lanes, elsewhere b's.
 inline Float4 Select4(Int4 mask, Float4 a, Float4 b) {
     return Float4((mask & Int4(a)) | (~mask & Int4(b)));
 }
-// The lanes' sum, in a fixed order.
-inline float Sum4(Float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
 }  // namespace gonio

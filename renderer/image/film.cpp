@@ -68,9 +68,17 @@ Film::Film(const FilmSpec& spec, const PixelFilter& filter, int tileSize)
       filter_(filter),
       xWeight_(filter.XRadius(), [&](float d) { return filter.XWeight(d); }),
       yWeight_(filter.YRadius(), [&](float d) { return filter.YWeight(d); }),
+      narrow_(filter.Separable() && FilterReachTable::Covers(filter.XRadius()) &&
+              FilterReachTable::Covers(filter.YRadius())),
       tileSize_(std::max(1, tileSize)),
       xmargin_(FilterMargin(filter.XRadius())),
       ymargin_(FilterMargin(filter.YRadius())),
+      xReach_(narrow_ ? FilterReachTable(filter.XRadius(), xmargin_,
+                                         [&](float d) { return filter.XWeight(d); })
+                      : FilterReachTable()),
+      yReach_(narrow_ ? FilterReachTable(filter.YRadius(), ymargin_,
+                                         [&](float d) { return filter.YWeight(d); })
+                      : FilterReachTable()),
       keepNearest_(WeightsCanCancel(filter)),
       range_(Imath::V2i(spec.xmin - xmargin_, spec.ymin - ymargin_),
              Imath::V2i(spec.xmax + xmargin_, spec.ymax + ymargin_)),
@@ -195,8 +203,7 @@ FilmTile::FilmTile(const Film& film, int index)
       channels_(film.Spec().channels),
       filtered_(film.Spec().FilteredChannels()),
       depthChannel_(film.Spec().DepthChannelOrNone()),
-      separableColourAndAlpha_(film.Filter().Separable() && !film.keepNearest_ &&
-                               filtered_ == kColourAndAlpha &&
+      separableColourAndAlpha_(film.narrow_ && !film.keepNearest_ && filtered_ == kColourAndAlpha &&
                                (depthChannel_ < 0 || depthChannel_ >= kColourAndAlpha)),
       columns_(size_t(2 * film.xmargin_ + 1)),
       values_(size_t(filtered_)) {
@@ -232,8 +239,8 @@ void FilmTile::AddPixelSamples(int px, int py, int count, const float* positions
                              Imath::V2i(std::min(footprint_.max.x, px + film_->xmargin_),
                                         std::min(footprint_.max.y, py + film_->ymargin_)));
     if (reach.isEmpty()) return;
-    if (separableColourAndAlpha_ && ColourAndAlphaFinite(count, values)) {
-        AddSeparableColourAndAlpha(reach, count, positions, values);
+    if (separableColourAndAlpha_ && UsualBatch(px, py, count, positions, values)) {
+        AddSeparableColourAndAlpha(px, py, reach, count, positions, values);
         return;
     }
     for (int i = 0; i < count; ++i)
@@ -256,77 +263,67 @@ inline int FilmTile::FindColumns(const Imath::Box2i& reach, float x) {
     return columns;
 }
 
-bool FilmTile::ColourAndAlphaFinite(int count, const float* values) const {
-    bool finite = true;
-    for (int i = 0; i < count; ++i)
-        for (int c = 0; c < kColourAndAlpha; ++c)
-            finite &= std::isfinite(values[size_t(i) * channels_ + c]);
-    return finite;
-}
-
-// Fills weights[i] with the axis weight of sample i (at coordinates[i]) for the pixel centred
-// at `centre`, for all `padded` samples (a multiple of kFloat4Lanes): 0 for those beyond the
-// radius. The sample counts for the pixel when -radius <= d < radius, d its offset.
-void FilmTile::AxisWeights(const FilterTable& table, float radius, float centre,
-                           const float* coordinates, int padded, float* weights) {
-    for (int i = 0; i < padded; i += kFloat4Lanes) {
-        const Float4 d = Load4(coordinates + i) - centre;
-        Store4(table(d, (d >= -radius) & (d < radius)), weights + i);
+// The batch the usual splat takes: each sample within its own pixel, which FilterReachTable
+// assumes, and its colour and alpha finite, as a sample of weight 0 adds 0·value to every sum
+// (an infinite or NaN value must not turn a pixel out of the sample's reach into NaN; the
+// per-sample path skips such pixels).
+bool FilmTile::UsualBatch(int px, int py, int count, const float* positions,
+                          const float* values) const {
+    bool inPixel = true;
+    Int4 finite = ~Int4{};
+    for (int i = 0; i < count; ++i) {
+        const float fx = positions[2 * i] - float(px), fy = positions[2 * i + 1] - float(py);
+        inPixel &= fx >= 0 && fx <= 1 && fy >= 0 && fy <= 1;
+        const Float4 rgba = Load4(values + size_t(i) * channels_);  // r g b a lead
+        finite &= rgba - rgba == Float4{};                          // NaN for inf and NaN
     }
+    return inPixel && (finite[0] & finite[1] & finite[2] & finite[3]);
 }
 
-// A pixel's samples all reach the same pixels, so each column's and each row's weights are
-// looked up once per sample, and a reach pixel sums the whole batch before touching sums_:
-// kFloat4Lanes partial sums in float, each over every kFloat4Lanes-th sample, added up in a fixed
-// order into the double sums. A separable filter's weight is the product of the column's and the
-// row's. A sample of weight 0 adds 0 to every sum: its values are finite (AddPixelSamples sends a
-// batch with an infinite or NaN value, which must not turn a pixel out of the sample's reach into
-// NaN through 0·inf, the other way).
-void FilmTile::AddSeparableColourAndAlpha(const Imath::Box2i& reach, int count,
+// A pixel's samples all reach the same pixels: each sample's weights for them come from one
+// lookup per axis (FilterReachTable), a column's lane each, and a reach pixel sums the whole
+// batch in float before the sums are added, once, to its double sums_. A separable filter's
+// weight is the product of the column's and the row's.
+void FilmTile::AddSeparableColourAndAlpha(int px, int py, const Imath::Box2i& reach, int count,
                                           const float* positions, const float* values) {
-    const int padded = (count + kFloat4Lanes - 1) / kFloat4Lanes * kFloat4Lanes;
-    const int columns = reach.max.x - reach.min.x + 1, rows = reach.max.y - reach.min.y + 1;
-    // The batch, one array of `padded` floats each: x, y, r, g, b, a, then the weights of each
-    // column and each row. The padding has no position (NaN: weight 0) and colour 0.
-    batch_.resize(size_t(2 + kColourAndAlpha + columns + rows) * size_t(padded));
-    const auto array = [&](int a) { return batch_.data() + size_t(a) * size_t(padded); };
-    float *const xs = array(0), *const ys = array(1), *const colour = array(2);
-    float* const xWeights = array(2 + kColourAndAlpha);
-    float* const yWeights = array(2 + kColourAndAlpha + columns);
-    for (int i = 0; i < padded; ++i) {
-        const bool sample = i < count;
-        xs[i] = sample ? positions[2 * i] : std::numeric_limits<float>::quiet_NaN();
-        ys[i] = sample ? positions[2 * i + 1] : std::numeric_limits<float>::quiet_NaN();
-        for (int c = 0; c < kColourAndAlpha; ++c)
-            colour[size_t(c) * padded + i] = sample ? values[size_t(i) * channels_ + c] : 0;
-    }
     const Film& film = *film_;
-    for (int k = 0; k < columns; ++k)
-        AxisWeights(film.xWeight_, film.filter_.XRadius(), float(reach.min.x + k) + 0.5f, xs,
-                    padded, xWeights + size_t(k) * padded);
-    for (int j = 0; j < rows; ++j)
-        AxisWeights(film.yWeight_, film.filter_.YRadius(), float(reach.min.y + j) + 0.5f, ys,
-                    padded, yWeights + size_t(j) * padded);
+    weights_.resize(2 * size_t(count));  // per sample, its columns' weights, then its rows'
+    for (int i = 0; i < count; ++i) {
+        weights_[2 * size_t(i)] = film.xReach_(positions[2 * i] - float(px));
+        weights_[2 * size_t(i) + 1] = film.yReach_(positions[2 * i + 1] - float(py));
+    }
+    if (film.xmargin_ == 0)
+        AddReachRows<1>(px, py, reach, count, values);
+    else
+        AddReachRows<3>(px, py, reach, count, values);
+}
 
+// A row of the reach at a time: per column, its r g b a sums side by side, and the sums of
+// the columns' weights and |weights| across.
+template <int kColumns>
+void FilmTile::AddReachRows(int px, int py, const Imath::Box2i& reach, int count,
+                            const float* values) {
+    const Film& film = *film_;
     constexpr size_t kStride = 2 + kColourAndAlpha;
     const size_t width = size_t(footprint_.max.x - footprint_.min.x + 1);
-    for (int j = 0; j < rows; ++j) {
-        double* const row = sums_.data() + (size_t(reach.min.y + j - footprint_.min.y) * width +
-                                            size_t(reach.min.x - footprint_.min.x)) *
-                                               kStride;
-        const float* const yw = yWeights + size_t(j) * padded;
-        for (int k = 0; k < columns; ++k) {
-            const float* const xw = xWeights + size_t(k) * padded;
-            Float4 lanes[kStride] = {};
-            for (int i = 0; i < padded; i += kFloat4Lanes) {
-                const Float4 w = Load4(xw + i) * Load4(yw + i);
-                lanes[0] += w;
-                lanes[1] += Abs4(w);
-                for (int c = 0; c < kColourAndAlpha; ++c)
-                    lanes[2 + c] += w * Load4(colour + size_t(c) * padded + i);
-            }
-            double* const sum = row + size_t(k) * kStride;
-            for (size_t s = 0; s < kStride; ++s) sum[s] += Sum4(lanes[s]);
+    for (int qy = reach.min.y; qy <= reach.max.y; ++qy) {
+        const int j = qy - (py - film.ymargin_);
+        Float4 weight = {}, absWeight = {}, colour[kColumns] = {};
+        for (int i = 0; i < count; ++i) {
+            const Float4 w = weights_[2 * size_t(i)] * weights_[2 * size_t(i) + 1][j];
+            weight += w;
+            absWeight += Abs4(w);
+            const Float4 rgba = Load4(values + size_t(i) * channels_);
+            for (int k = 0; k < kColumns; ++k) colour[k] += w[k] * rgba;
+        }
+        double* sums = sums_.data() + (size_t(qy - footprint_.min.y) * width +
+                                       size_t(reach.min.x - footprint_.min.x)) *
+                                          kStride;
+        for (int qx = reach.min.x; qx <= reach.max.x; ++qx, sums += kStride) {
+            const int k = qx - (px - film.xmargin_);
+            sums[0] += weight[k];
+            sums[1] += absWeight[k];
+            for (int c = 0; c < kColourAndAlpha; ++c) sums[2 + c] += colour[k][c];
         }
     }
 }

@@ -22,6 +22,7 @@
 #include <mutex>
 #include <vector>
 
+#include "renderer/image/filter_reach_table.h"
 #include "renderer/image/filter_table.h"
 #include "renderer/image/pixel_filter.h"
 
@@ -144,8 +145,10 @@ class Film {
     FilmSpec spec_;
     PixelFilter filter_;
     FilterTable xWeight_, yWeight_;  // a separable filter's axes, for AddSample
+    bool narrow_;                    // separable, and FilterReachTable covers both radii
     int tileSize_;
     int xmargin_, ymargin_;
+    FilterReachTable xReach_, yReach_;  // where narrow_
     bool keepNearest_;
     Imath::Box2i range_;
     int tilesX_, tilesY_;
@@ -183,13 +186,13 @@ class FilmTile {
     template <bool kKeepZeroWeights>
     int FindColumns(const Imath::Box2i& reach, float x);
     // AddPixelSamples' two ways to splat into the footprint pixels `reach`: the usual case
-    // (separableColourAndAlpha_), a pixel's samples at once, and every other, a sample at
-    // (x, y) at a time.
-    void AddSeparableColourAndAlpha(const Imath::Box2i& reach, int count, const float* positions,
-                                    const float* values);
-    bool ColourAndAlphaFinite(int count, const float* values) const;
-    static void AxisWeights(const FilterTable& table, float radius, float centre,
-                            const float* coordinates, int padded, float* weights);
+    // (separableColourAndAlpha_ and a UsualBatch), a pixel's samples at once, and every other,
+    // a sample at (x, y) at a time.
+    bool UsualBatch(int px, int py, int count, const float* positions, const float* values) const;
+    void AddSeparableColourAndAlpha(int px, int py, const Imath::Box2i& reach, int count,
+                                    const float* positions, const float* values);
+    template <int kColumns>
+    void AddReachRows(int px, int py, const Imath::Box2i& reach, int count, const float* values);
     void AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values);
     // Makes a sample at squared distance `distance` from the pixel's centre its nearest one, if
     // it is nearer than the one kept.
@@ -209,7 +212,8 @@ class FilmTile {
     std::vector<float> depth_;  // per footprint pixel
     int filtered_ = 0;          // channels summed in sums_
     int depthChannel_ = -1;     // Spec().DepthChannelOrNone()
-    // A separable filter, no nearest samples kept, and r g b a the filtered channels.
+    // A narrow separable filter (Film::narrow_), no nearest samples kept, and r g b a the
+    // filtered channels.
     bool separableColourAndAlpha_ = false;
     size_t Stride() const { return 2 + size_t(filtered_); }  // doubles a pixel in sums_
 
@@ -222,8 +226,7 @@ class FilmTile {
     };
     std::vector<Column> columns_;
     std::vector<double> values_;
-    // AddSeparableColourAndAlpha's scratch: the batch's column and row weights and its colours.
-    std::vector<float> batch_;
+    std::vector<Float4> weights_;  // AddSeparableColourAndAlpha's, per sample
 };
 
 }  // namespace gonio

@@ -9,8 +9,6 @@
 #include <functional>
 #include <vector>
 
-#include "base/float4.h"
-
 namespace gonio {
 
 class FilterTable {
@@ -27,19 +25,6 @@ class FilterTable {
         const float f = x - float(i);  // 0 at the last entry, whose copy follows it
         const float* table = table_.data();
         return table[i] + f * (table[i + 1] - table[i]);
-    }
-    // The same for four offsets at once (equal to the one above lane by lane), 0 in the lanes
-    // where `within` is false.
-    Float4 operator()(Float4 d, Int4 within) const {
-        const Float4 x = Abs4(d) * scale_;
-        within &= x <= intervals_;
-        // Out of range (and NaN) lanes look up the last entry, then take 0.
-        const Int4 i = __builtin_convertvector(Select4(within, x, Float4{} + intervals_), Int4);
-        const Float4 f = x - __builtin_convertvector(i, Float4);
-        const float* table = table_.data();
-        const Float4 at = {table[i[0]], table[i[1]], table[i[2]], table[i[3]]};
-        const Float4 next = {table[i[0] + 1], table[i[1] + 1], table[i[2] + 1], table[i[3] + 1]};
-        return Select4(within, at + f * (next - at), Float4{});
     }
 
   private:

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "renderer/image/filter_reach_table.h"
 #include "renderer/image/pixel_filter.h"
 
 namespace gonio {
@@ -45,31 +46,43 @@ TEST(FilterTable, MatchesEveryFilterOverItsFootprint) {
     }
 }
 
-// The four-lane lookup the film's splat uses gives the scalar one's weights exactly, lane by
-// lane, and 0 where a lane is out of reach, beyond the radius, or not a number.
-TEST(FilterTable, FourLanesAreFourScalarLookups) {
-    std::string error;
-    const auto filter = PixelFilter::FromRib("gaussian", 2, 2, error);
-    ASSERT_TRUE(filter) << error;
-    const FilterTable table(filter->XRadius(), [&](float d) { return filter->XWeight(d); });
-    const float r = filter->XRadius();
-    for (int i = -300; i <= 300; ++i) {
-        const float d0 = r * (float(i) + 0.37f) / 201.f;  // up to 1.5 radii
-        const Float4 d = {d0, -0.5f * d0, 0.25f * d0 + 0.01f, -d0};
-        const Float4 weights = table(d, Int4{-1, -1, -1, -1});
-        for (int lane = 0; lane < kFloat4Lanes; ++lane)
-            ASSERT_EQ(weights[lane], table(d[lane])) << d[lane];
-        const Float4 masked = table(d, Int4{0, -1, 0, -1});
-        EXPECT_EQ(masked[0], 0.f);
-        EXPECT_EQ(masked[1], weights[1]);
-        EXPECT_EQ(masked[2], 0.f);
+// FilterReachTable, the film's usual splat: for a sample anywhere in its pixel, each lane is the
+// filter's weight for one pixel of its reach, exactly 0 beyond the radius (the film's rule:
+// -radius <= d < radius counts) and in the lanes past the reach.
+TEST(FilterReachTable, LanesAreTheReachedPixelsWeights) {
+    // Tolerances: linear interpolation's bound h²/8 · max|w''| at h = 1/512 pixel; a Gaussian
+    // of width W is exp(−8 d² / W²), whose |w''| peaks at 16 / W² (at d = 0). The triangle's
+    // kinks (d = 0 and the radius) lie on the grid, so it is exact up to rounding. Each adds
+    // 5e-7 for the rounding of float weights near 1 (a few ulps).
+    const Case cases[] = {{"box", 1, 0},
+                          {"triangle", 2, 1e-6f},
+                          {"gaussian", 2, 2.4e-6f},
+                          {"gaussian", 3, 1.35e-6f},
+                          {"gaussian", 1.5f, 3.9e-6f}};
+    for (const Case& c : cases) {
+        std::string error;
+        const auto filter = PixelFilter::FromRib(c.name, c.width, c.width, error);
+        ASSERT_TRUE(filter) << c.name << ": " << error;
+        const float radius = filter->XRadius();
+        ASSERT_TRUE(FilterReachTable::Covers(radius)) << c.name << " " << c.width;
+        const int margin = std::max(0, int(std::ceil(0.5f + radius)) - 1);
+        const FilterReachTable table(radius, margin, [&](float d) { return filter->XWeight(d); });
+        for (int i = 0; i <= 1000; ++i) {
+            const float f = float(i) / 1000;  // both ends of the pixel included
+            const Float4 weights = table(f);
+            for (int k = 0; k < kFloat4Lanes; ++k) {
+                const float d = f - (float(k - margin) + 0.5f);
+                const bool reached = k <= 2 * margin && d >= -radius && d < radius;
+                if (!reached) {
+                    EXPECT_EQ(weights[k], 0.f) << c.name << " f " << f << " lane " << k;
+                    continue;
+                }
+                EXPECT_NEAR(weights[k], filter->XWeight(d), c.tolerance)
+                    << c.name << " " << c.width << " f " << f << " lane " << k;
+            }
+        }
     }
-    const float nan = std::nanf("");
-    const Float4 odd = table(Float4{nan, 0, 2 * r, -2 * r}, Int4{-1, -1, -1, -1});
-    EXPECT_EQ(odd[0], 0.f);
-    EXPECT_EQ(odd[1], table(0.f));
-    EXPECT_EQ(odd[2], 0.f);
-    EXPECT_EQ(odd[3], 0.f);
+    EXPECT_FALSE(FilterReachTable::Covers(2));  // gaussian 4 4 takes the per-sample path
 }
 
 }  // namespace
