@@ -368,8 +368,7 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
     for (size_t j = 0; j < members.size(); ++j) {
         const int ray = layers_.HitAt(members[j]).ray;
         SampleState& sample = samples_[size_t(ray)];
-        sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
-        const size_t r = size_t(shadedBy_[j]);           // the shaded point this sample shows
+        const size_t r = size_t(shadedBy_[j]);  // the shaded point this sample shows
         // A matte object's opacity is the surface's Os, not a shader's output.
         const float* opacities =
             attributes->matte ? layers_.PointAt(members[j]).Os.data() : &Oi_[r * ncomps_];
@@ -383,6 +382,8 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         if (CompositeLayer(3, rgb, opacityRgb, attributes->matte, sample.colour,
                            sample.transmittance) < kNegligibleTransmittance)
             layers_.Stop(ray);
+        else
+            sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
         if (attributes->matte) continue;
         sample.alpha += covered;
         // AOVs are not premultiplied: each layer adds its value weighted by the coverage it

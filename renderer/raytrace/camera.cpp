@@ -46,6 +46,7 @@ Camera::Camera(const Options& options)
         focalDistance_ = options.focalDistance;
     }
     worldFromCamera_.multVecMatrix(Imath::V3f(0, 0, 0), pinholeOrigin_);
+    stillPinhole_ = perspective_ && lensRadius_ == 0 && motionTimes_.empty();
 }
 
 Imath::M44f Camera::ScreenFromCamera() const {
@@ -68,15 +69,14 @@ Imath::M44f Camera::RasterFromNdc() const {
     return m;
 }
 
-CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float lensV,
-                              float time) const {
-    const float sx = screen_[0] + rasterX * screenPerPixel_[0];
-    const float sy = screen_[3] - rasterY * screenPerPixel_[1];
+CameraRay Camera::GenerateLensOrMovingRay(float rasterX, float rasterY, float lensU, float lensV,
+                                          float time) const {
+    const Imath::V2f screen = ScreenPoint(rasterX, rasterY);
     Imath::V3f org(0, 0, 0), dir(0, 0, 1);
     if (perspective_) {
-        dir = Imath::V3f(sx * tanHalfFov_, sy * tanHalfFov_, 1);
+        dir = Imath::V3f(screen.x * tanHalfFov_, screen.y * tanHalfFov_, 1);
     } else {
-        org = Imath::V3f(sx, sy, 0);
+        org = Imath::V3f(screen.x, screen.y, 0);
     }
     if (lensRadius_ > 0) {
         // Thin lens: every ray through the lens meets the pinhole ray on the focal plane.
@@ -91,14 +91,10 @@ CameraRay Camera::GenerateRay(float rasterX, float rasterY, float lensU, float l
         worldFromCamera.multVecMatrix(org, ray.org);
         worldFromCamera.multDirMatrix(dir, ray.dir);
     };
-    if (!motionTimes_.empty()) {
+    if (!motionTimes_.empty())
         toWorld(TransformAt(motionTimes_, cameraFromWorldMotion_, time).inverse());
-    } else if (perspective_ && lensRadius_ == 0) {
-        ray.org = pinholeOrigin_;  // every ray leaves the pinhole
-        worldFromCamera_.multDirMatrix(dir, ray.dir);
-    } else {
+    else
         toWorld(worldFromCamera_);
-    }
     ray.time = time;
     ray.tnear = nearClip_;
     ray.tfar = farClip_;

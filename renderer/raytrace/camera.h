@@ -27,7 +27,20 @@ class Camera {
     // with (lensU, lensV) in [0,1)² choosing the point on the lens, at `time` (a moving
     // camera: Options::cameraMotion).
     CameraRay GenerateRay(float rasterX, float rasterY, float lensU, float lensV,
-                          float time = 0) const;
+                          float time = 0) const {
+        if (!stillPinhole_) return GenerateLensOrMovingRay(rasterX, rasterY, lensU, lensV, time);
+        // The usual camera inline, as every camera sample comes here: every ray leaves the
+        // pinhole.
+        const Imath::V2f screen = ScreenPoint(rasterX, rasterY);
+        CameraRay ray;
+        ray.org = pinholeOrigin_;
+        worldFromCamera_.multDirMatrix(
+            Imath::V3f(screen.x * tanHalfFov_, screen.y * tanHalfFov_, 1), ray.dir);
+        ray.time = time;
+        ray.tnear = nearClip_;
+        ray.tfar = farClip_;
+        return ray;
+    }
 
     // Whether GenerateRay's (lensU, lensV) matter (DepthOfField).
     bool HasLens() const { return lensRadius_ > 0; }
@@ -41,6 +54,14 @@ class Camera {
     const float* ScreenWindow() const { return screen_; }
 
   private:
+    Imath::V2f ScreenPoint(float rasterX, float rasterY) const {
+        return Imath::V2f(screen_[0] + rasterX * screenPerPixel_[0],
+                          screen_[3] - rasterY * screenPerPixel_[1]);
+    }
+    // GenerateRay for orthographic, thin-lens and moving cameras.
+    CameraRay GenerateLensOrMovingRay(float rasterX, float rasterY, float lensU, float lensV,
+                                      float time) const;
+
     Imath::M44f worldFromCamera_;
     Imath::V3f pinholeOrigin_;  // a still perspective camera's rays' origin, in world space
     std::vector<float> motionTimes_;
@@ -52,6 +73,7 @@ class Camera {
     float screenPerPixel_[2];  // the screen window's width / xres and height / yres
     float nearClip_, farClip_;
     float lensRadius_ = 0, focalDistance_ = 0;
+    bool stillPinhole_ = false;  // perspective, no lens, no motion
 };
 
 }  // namespace gonio
