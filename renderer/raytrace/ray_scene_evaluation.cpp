@@ -169,18 +169,6 @@ void RayScene::Evaluate(const V3f& org, const V3f& dir, const RayHit& hit,
     FinishEvaluate(out);
 }
 
-namespace {
-
-// A quadric camera hit's normal (OrientedNormalAt), ahead of its (u, v) and tangents.
-ObjectHit QuadricNormalOnly(const V3f& normal) {
-    ObjectHit object;
-    object.geometry.Ng = object.N = normal;
-    object.geometry.dPdu = object.geometry.dPdv = V3f(0);
-    return object;
-}
-
-}  // namespace
-
 void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hit,
                                 SurfacePoint* out) const {
     const Impl& s = *impl_;
@@ -209,48 +197,47 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
                                 ? record->quadric->quadric->OrientedNormalAt(hit.objectP)
                                 : V3f(0);
     const auto* mesh = std::get_if<TriangleMesh>(&record->shape->geometry);
-    sp.pending = pointNormal != V3f(0) ? SurfacePoint::Pending::kQuadric
-                 : mesh                ? SurfacePoint::Pending::kMesh
-                                       : SurfacePoint::Pending::kNothing;
-    // A flat mesh's normal is Embree's, which it found with the hit.
-    const bool embreeNormal =
-        sp.pending == SurfacePoint::Pending::kMesh && record->embreeNgSign != 0;
-    // Made in place (no copy of the stencils and geometry: every camera hit comes here).
-    const ObjectHit object = [&] {
-        if (embreeNormal) return EvaluateMeshFace(*mesh, hit.primID);
-        if (sp.pending == SurfacePoint::Pending::kMesh)
-            return EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v);
-        if (sp.pending == SurfacePoint::Pending::kNothing)
-            return s.EvaluateObject(*record, hit, worldP, dir,
-                                    resolved.placement ? spaceFromWorld : kIdentity);
-        return QuadricNormalOnly(pointNormal);
-    }();
     sp.shape = record->shape;
     sp.P = worldP;
-    sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
-    sp.dPdv = object.geometry.dPdv;
-    const float flip = record->shape->flipNormals != hit.flipNormal ? -1.f : 1.f;
-    const V3f spaceNg = record->embreeNgSign * hit.Ng;
-    sp.Ng = flip * Normalized(embreeNormal
-                                  ? (resolved.placement ? TransformNormal(spaceFromWorld, spaceNg)
-                                                        : spaceNg)
-                                  : TransformNormal(objectFromWorld, object.geometry.Ng));
-    // N is Ng unless the primitive gives normals.
-    sp.N = embreeNormal || object.N == object.geometry.Ng
-               ? sp.Ng
-               : flip * Normalized(TransformNormal(objectFromWorld, object.N));
-    sp.u = object.geometry.u, sp.v = object.geometry.v;
-
     sp.record = record;
     sp.primID = hit.primID;
     sp.hitU = hit.u, sp.hitV = hit.v;
-    // A pending hit's other stencils come with FinishEvaluate.
-    if (sp.pending == SurfacePoint::Pending::kNothing)
-        sp.stencils = object.stencils;
-    else
-        sp.stencils.uniform = object.stencils.uniform;
     sp.attributes = resolved.attributes;
     sp.objectP = hit.objectP;
+    const float flip = record->shape->flipNormals != hit.flipNormal ? -1.f : 1.f;
+    // A flat mesh's normal is Embree's, which it found with the hit, and a plain quadric's its
+    // point's: such a hit has its normals now, and (u, v), the tangents and the stencils but
+    // the uniform one (a flat mesh's face) wait for FinishEvaluate.
+    if (pointNormal != V3f(0) || (mesh && record->embreeNgSign != 0)) {
+        const V3f spaceNg = record->embreeNgSign * hit.Ng;
+        const V3f worldNg = pointNormal != V3f(0) ? TransformNormal(objectFromWorld, pointNormal)
+                            : resolved.placement  ? TransformNormal(spaceFromWorld, spaceNg)
+                                                  : spaceNg;
+        sp.pending = mesh ? SurfacePoint::Pending::kMesh : SurfacePoint::Pending::kQuadric;
+        sp.Ng = sp.N = flip * Normalized(worldNg);
+        sp.dPdu = sp.dPdv = V3f(0);
+        sp.u = sp.v = 0;
+        sp.stencils.uniform = mesh ? MeshFace(*mesh, hit.primID) : 0;
+        return;
+    }
+    sp.pending = mesh ? SurfacePoint::Pending::kMesh : SurfacePoint::Pending::kNothing;
+    const ObjectHit object =
+        mesh ? EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v)
+             : s.EvaluateObject(*record, hit, worldP, dir,
+                                resolved.placement ? spaceFromWorld : kIdentity);
+    sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
+    sp.dPdv = object.geometry.dPdv;
+    sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
+    // N is Ng unless the primitive gives normals.
+    sp.N = object.N == object.geometry.Ng
+               ? sp.Ng
+               : flip * Normalized(TransformNormal(objectFromWorld, object.N));
+    sp.u = object.geometry.u, sp.v = object.geometry.v;
+    // A pending mesh hit's other stencils come with FinishEvaluate.
+    if (mesh)
+        sp.stencils.uniform = object.stencils.uniform;
+    else
+        sp.stencils = object.stencils;
 }
 
 void RayScene::FinishEvaluate(SurfacePoint* out) const {

@@ -122,12 +122,8 @@ void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float
     }
 }
 
-ObjectHit EvaluateMeshFace(const TriangleMesh& mesh, unsigned primID) {
-    ObjectHit hit;
-    hit.geometry.P = hit.geometry.dPdu = hit.geometry.dPdv = hit.geometry.Ng = hit.N = V3f(0);
-    hit.stencils.uniform =
-        mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
-    return hit;
+int MeshFace(const TriangleMesh& mesh, unsigned primID) {
+    return mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
 }
 
 ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
@@ -136,8 +132,10 @@ ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b
     const V3f& p1 = mesh.positions[idx[1]];
     const V3f& p2 = mesh.positions[idx[2]];
     const float b0 = 1 - b1 - b2;
-    ObjectHit hit = EvaluateMeshFace(mesh, primID);
+    ObjectHit hit;
     SurfaceGeometry& g = hit.geometry;
+    g.P = g.dPdu = g.dPdv = V3f(0);
+    hit.stencils.uniform = MeshFace(mesh, primID);
     g.Ng = SafeNormalize((p1 - p0).cross(p2 - p0), V3f(0, 0, 1));
     hit.N = g.Ng;
     if (!mesh.cornerNormals.empty()) {

@@ -37,9 +37,9 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
 // not be shaded needs (P, (u, v) and the tangents are left zero), then P, (u, v), the tangents
 // and the other stencils.
 ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
-// Less still, for a mesh whose normal is Embree's (GeometryRecord::embreeNgSign): the uniform
-// stencil only, every vector zero.
-ObjectHit EvaluateMeshFace(const TriangleMesh& mesh, unsigned primID);
+// The face (of a polygon mesh) that triangle primID is part of: the index of its uniform
+// primitive variables.
+int MeshFace(const TriangleMesh& mesh, unsigned primID);
 void EvaluateMeshParameters(const TriangleMesh& mesh, unsigned primID, float b1, float b2,
                             ObjectHit* hit);
 // At a point the quadric's IntersectPoint reported (Quadric::EvaluateAt). `normals`: the

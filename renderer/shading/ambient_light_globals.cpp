@@ -10,7 +10,7 @@ void AmbientLightGlobals::Set(const ShadingBatch& batch, const Imath::M44f& worl
     const Imath::M44f normalToCurrent = worldFromCurrent.transposed();
     const Imath::M44f currentFromWorld = worldFromCurrent.inverse();
     for (int i = 0; i < count && size_t(i) < batch.points.size(); ++i) {
-        Imath::V3f n, view;
+        Imath::V3f n, view(0);  // I is 0 where the batch has no incident rays
         normalToCurrent.multDirMatrix(batch.points[i]->N, n);
         if (size_t(i) < batch.incident.size())
             currentFromWorld.multDirMatrix(batch.incident[i], view);
