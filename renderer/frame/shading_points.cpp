@@ -14,8 +14,8 @@ constexpr float kMinNormalCosine = 0.9f;
 
 }  // namespace
 
-bool ShadingPointSharing::CanShare(const ShadingPointHit& hit, const ShadingPointHit& shaded,
-                                   float cell) const {
+inline bool ShadingPointSharing::CanShare(const ShadingPointHit& hit, const ShadingPointHit& shaded,
+                                          float cell) const {
     const SurfacePoint& a = *hit.point;
     const SurfacePoint& b = *shaded.point;
     if (a.shape != b.shape || a.record != b.record) return false;

@@ -239,8 +239,11 @@ void FilmTile::AddPixelSamples(int px, int py, int count, const float* positions
                              Imath::V2i(std::min(footprint_.max.x, px + film_->xmargin_),
                                         std::min(footprint_.max.y, py + film_->ymargin_)));
     if (reach.isEmpty()) return;
-    if (separableColourAndAlpha_ && UsualBatch(px, py, count, positions, values)) {
-        AddSeparableColourAndAlpha(px, py, reach, count, positions, values);
+    if (separableColourAndAlpha_ && LookUpReachWeights(px, py, count, positions, values)) {
+        if (film_->xmargin_ == 0)
+            AddReachRows<1>(px, py, reach, count, values);
+        else
+            AddReachRows<3>(px, py, reach, count, values);
         return;
     }
     for (int i = 0; i < count; ++i)
@@ -263,43 +266,31 @@ inline int FilmTile::FindColumns(const Imath::Box2i& reach, float x) {
     return columns;
 }
 
-// The batch the usual splat takes: each sample within its own pixel, which FilterReachTable
-// assumes, and its colour and alpha finite, as a sample of weight 0 adds 0·value to every sum
-// (an infinite or NaN value must not turn a pixel out of the sample's reach into NaN; the
-// per-sample path skips such pixels).
-bool FilmTile::UsualBatch(int px, int py, int count, const float* positions,
-                          const float* values) const {
-    bool inPixel = true;
+// For the batch the usual splat takes, looks up each sample's weights for the pixels it
+// reaches into weights_, one FilterReachTable lookup per axis: each sample within its own
+// pixel, which the table assumes, and its colour and alpha finite, as a sample of weight 0 adds
+// 0·value to every sum (an infinite or NaN value must not turn a pixel out of the sample's
+// reach into NaN; the per-sample path skips such pixels). False for any other batch.
+bool FilmTile::LookUpReachWeights(int px, int py, int count, const float* positions,
+                                  const float* values) {
+    const Film& film = *film_;
+    weights_.resize(2 * size_t(count));  // per sample, its columns' weights, then its rows'
     Int4 finite = ~Int4{};
     for (int i = 0; i < count; ++i) {
         const float fx = positions[2 * i] - float(px), fy = positions[2 * i + 1] - float(py);
-        inPixel &= fx >= 0 && fx <= 1 && fy >= 0 && fy <= 1;
+        if (!(fx >= 0 && fx <= 1 && fy >= 0 && fy <= 1)) return false;
+        weights_[2 * size_t(i)] = film.xReach_(fx);
+        weights_[2 * size_t(i) + 1] = film.yReach_(fy);
         const Float4 rgba = Load4(values + size_t(i) * channels_);  // r g b a lead
         finite &= rgba - rgba == Float4{};                          // NaN for inf and NaN
     }
-    return inPixel && (finite[0] & finite[1] & finite[2] & finite[3]);
+    return finite[0] & finite[1] & finite[2] & finite[3];
 }
 
-// A pixel's samples all reach the same pixels: each sample's weights for them come from one
-// lookup per axis (FilterReachTable), a column's lane each, and a reach pixel sums the whole
-// batch in float before the sums are added, once, to its double sums_. A separable filter's
-// weight is the product of the column's and the row's.
-void FilmTile::AddSeparableColourAndAlpha(int px, int py, const Imath::Box2i& reach, int count,
-                                          const float* positions, const float* values) {
-    const Film& film = *film_;
-    weights_.resize(2 * size_t(count));  // per sample, its columns' weights, then its rows'
-    for (int i = 0; i < count; ++i) {
-        weights_[2 * size_t(i)] = film.xReach_(positions[2 * i] - float(px));
-        weights_[2 * size_t(i) + 1] = film.yReach_(positions[2 * i + 1] - float(py));
-    }
-    if (film.xmargin_ == 0)
-        AddReachRows<1>(px, py, reach, count, values);
-    else
-        AddReachRows<3>(px, py, reach, count, values);
-}
-
-// A row of the reach at a time: per column, its r g b a sums side by side, and the sums of
-// the columns' weights and |weights| across.
+// A pixel's samples all reach the same pixels, and a reach pixel sums the whole batch in float
+// before the sums are added, once, to its double sums_. A separable filter's weight is the
+// product of the column's and the row's (weights_). A row of the reach at a time: per column,
+// its r g b a sums side by side, and the sums of the columns' weights and |weights| across.
 template <int kColumns>
 void FilmTile::AddReachRows(int px, int py, const Imath::Box2i& reach, int count,
                             const float* values) {

@@ -186,11 +186,9 @@ class FilmTile {
     template <bool kKeepZeroWeights>
     int FindColumns(const Imath::Box2i& reach, float x);
     // AddPixelSamples' two ways to splat into the footprint pixels `reach`: the usual case
-    // (separableColourAndAlpha_ and a UsualBatch), a pixel's samples at once, and every other,
-    // a sample at (x, y) at a time.
-    bool UsualBatch(int px, int py, int count, const float* positions, const float* values) const;
-    void AddSeparableColourAndAlpha(int px, int py, const Imath::Box2i& reach, int count,
-                                    const float* positions, const float* values);
+    // (separableColourAndAlpha_, and LookUpReachWeights takes the batch), a pixel's samples at
+    // once, and every other, a sample at (x, y) at a time.
+    bool LookUpReachWeights(int px, int py, int count, const float* positions, const float* values);
     template <int kColumns>
     void AddReachRows(int px, int py, const Imath::Box2i& reach, int count, const float* values);
     void AddAnyChannels(const Imath::Box2i& reach, float x, float y, const float* values);
@@ -226,7 +224,7 @@ class FilmTile {
     };
     std::vector<Column> columns_;
     std::vector<double> values_;
-    std::vector<Float4> weights_;  // AddSeparableColourAndAlpha's, per sample
+    std::vector<Float4> weights_;  // LookUpReachWeights', per sample
 };
 
 }  // namespace gonio
