@@ -289,7 +289,8 @@ int QuantizeValue(float value, const Quantization& q, int x, int y, int channel)
     double random = HashPixel(x, y, channel) * (2.0 / 4294967296.0) - 1.0;
     double v = std::isnan(value) ? 0.0 : double(q.one) * value + q.dither * random;
     v = std::min(std::max(v, double(q.min)), double(q.max));
-    return int(std::lround(v));
+    // std::lround's halves away from zero, without its library call (a value per channel).
+    return v >= 0 ? int(v + 0.5) : -int(0.5 - v);
 }
 
 // Fichet, Pacanowski and Wilkie 2021, "An OpenEXR Layout for Spectral Images" (JCGT 10(3)): an

@@ -104,6 +104,12 @@ TEST(ImagingPipeline, QuantizeRoundsAndClamps) {
     EXPECT_EQ(QuantizeValue(0.0f, tenBit, 0, 0, 0), 16);
     EXPECT_EQ(QuantizeValue(1.0f, tenBit, 0, 0, 0), 1000);
     EXPECT_EQ(QuantizeValue(0.5f, tenBit, 0, 0, 0), 512);
+    // RISpec's round: halves away from zero, on both sides of a range that reaches below 0.
+    const Quantization signedRange{2, -1024, 3071, 0.0f};
+    EXPECT_EQ(QuantizeValue(1.25f, signedRange, 0, 0, 0), 3);
+    EXPECT_EQ(QuantizeValue(-1.25f, signedRange, 0, 0, 0), -3);
+    EXPECT_EQ(QuantizeValue(-1.2f, signedRange, 0, 0, 0), -2);
+    EXPECT_EQ(QuantizeValue(-1e9f, signedRange, 0, 0, 0), -1024);
 }
 
 TEST(ImagingPipeline, DitherStaysWithinItsAmplitudeAndIsFixedPerPixel) {
