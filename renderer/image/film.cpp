@@ -18,15 +18,12 @@ int FilterMargin(float radius) { return std::max(0, int(std::ceil(0.5f + radius)
 // cancelled (negative lobes), and dividing by their sum would only amplify noise.
 constexpr float kCancelledWeightFraction = 1e-3f;
 
-// One sample's share of one pixel (FilmTile::sums_): sum[0] += w, sum[1] += |w| and
-// sum[2 + c] += w·values[c], the innermost loop of every render. A count fixed at compile time
-// (kChannels > 0) lets the compiler unroll and vectorise it.
-template <int kChannels>
+// One sample's share of one pixel (FilmTile::sums_) on the per-sample path: sum[0] += w,
+// sum[1] += |w| and sum[2 + c] += w·values[c].
 void AddWeighted(float w, const double* __restrict values, int channels, double* __restrict sum) {
-    const int n = kChannels > 0 ? kChannels : channels;
     sum[0] += w;
     sum[1] += std::fabs(w);
-    for (int c = 0; c < n; ++c) sum[2 + c] += double(w) * values[c];
+    for (int c = 0; c < channels; ++c) sum[2 + c] += double(w) * values[c];
 }
 
 // The filtered channels without AOVs: r g b a.
@@ -348,7 +345,7 @@ void FilmTile::AddAnyChannels(const Imath::Box2i& reach, float x, float y, const
             if (keepNearest) KeepNearest(pixel, dx * dx + dy * dy, values);
             const float w =
                 separable ? columns_[size_t(k)].weight * yWeight : filter.Evaluate(dx, dy);
-            if (w != 0.0f) AddWeighted<0>(w, values_.data(), filtered_, &sums_[pixel * stride]);
+            if (w != 0.0f) AddWeighted(w, values_.data(), filtered_, &sums_[pixel * stride]);
         }
     }
 }

@@ -144,7 +144,7 @@ class Film {
 
     FilmSpec spec_;
     PixelFilter filter_;
-    FilterTable xWeight_, yWeight_;  // a separable filter's axes, for AddSample
+    FilterTable xWeight_, yWeight_;  // a separable filter's axes, for the per-sample path
     bool narrow_;                    // separable, and FilterReachTable covers both radii
     int tileSize_;
     int xmargin_, ymargin_;

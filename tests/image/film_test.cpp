@@ -118,9 +118,9 @@ INSTANTIATE_TEST_SUITE_P(Film, ConstantField,
 // Every window pixel is the plain weighted mean of the samples within the filter's reach, each
 // weighted by the film's tabulated axes (or the disk's own weight): a reference that weighs every
 // sample against every pixel, so that the splat's shortcuts (the columns it skips, the rows it
-// stops at) can neither drop a sample nor count one twice.
-TEST_P(ConstantField, PixelsAreThePlainWeightedMeanOfTheirSamples) {
-    const PixelFilter filter = MakeFilter(GetParam(), 3, 2.5f);
+// stops at, the batch sums of narrow filters) can neither drop a sample nor count one twice.
+void ExpectPlainWeightedMeans(const char* name, float xwidth, float ywidth) {
+    const PixelFilter filter = MakeFilter(name, xwidth, ywidth);
     const FilmSpec spec = SmallSpec(11, 7, 3, 2, 5);
     Film film(spec, filter);
     const std::vector<TestSample> samples = FieldSamples(film, [](int px, int py, int s, float* v) {
@@ -145,8 +145,14 @@ TEST_P(ConstantField, PixelsAreThePlainWeightedMeanOfTheirSamples) {
             if (std::fabs(weights) < 1e-3 * absWeights) continue;  // the nearest-sample fallback
             for (int c = 0; c < 4; ++c)  // channel 4 is depth, filtered by "min"
                 ASSERT_NEAR(image.At(px, py)[c], sum[c] / weights, 1e-5)
-                    << GetParam() << " pixel " << px << "," << py << " channel " << c;
+                    << name << " " << xwidth << " pixel " << px << "," << py << " channel " << c;
         }
+}
+
+// Narrow (FilterReachTable: radius ≤ 1.5) and wide (the per-sample path) footprints.
+TEST_P(ConstantField, PixelsAreThePlainWeightedMeanOfTheirSamples) {
+    ExpectPlainWeightedMeans(GetParam(), 3, 2.5f);
+    ExpectPlainWeightedMeans(GetParam(), 5, 4);
 }
 
 // One sample per pixel at its centre: a single bright sample reaches each pixel with the filter's
