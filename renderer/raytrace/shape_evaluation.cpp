@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "renderer/geometry/basis.h"
+#include "renderer/raytrace/transforms.h"
 
 namespace gonio {
 namespace {
@@ -33,11 +34,6 @@ Stencil Single(int index) {
     s.index[0] = index;
     s.weight[0] = 1;
     return s;
-}
-
-inline Imath::V3f SafeNormalize(const Imath::V3f& v, const Imath::V3f& fallback) {
-    const float len = v.length();
-    return len > 0 ? v * (1 / len) : fallback;
 }
 
 // A curve segment's centre, tangent and radius at its parameter t (geometry/shape.h: four
@@ -79,10 +75,10 @@ CurveFrame SegmentFrame(const CurveSet& curves, unsigned primID, float t) {
 void FaceTheRay(const CurveSet& curves, unsigned primID, float t, const V3f& dir,
                 SurfaceGeometry* g) {
     const CurveFrame frame = SegmentFrame(curves, primID, t);
-    const V3f tangent = SafeNormalize(frame.tangent, g->Ng);
-    const V3f side = SafeNormalize(tangent.cross(dir), V3f(0));
+    const V3f tangent = NormalizedOr(frame.tangent, g->Ng);
+    const V3f side = NormalizedOr(tangent.cross(dir), V3f(0));
     if (side == V3f(0)) return;  // looking along the curve: no width to face
-    g->Ng = SafeNormalize(side.cross(tangent), g->Ng);
+    g->Ng = NormalizedOr(side.cross(tangent), g->Ng);
     if (g->Ng.dot(dir) > 0) g->Ng = -g->Ng;
     if (frame.radius > 0)
         g->u = std::clamp(0.5f + (g->P - frame.centre).dot(side) / (2 * frame.radius), 0.f, 1.f);
@@ -136,13 +132,13 @@ ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b
     SurfaceGeometry& g = hit.geometry;
     g.P = g.dPdu = g.dPdv = V3f(0);
     hit.stencils.uniform = MeshFace(mesh, primID);
-    g.Ng = SafeNormalize((p1 - p0).cross(p2 - p0), V3f(0, 0, 1));
+    g.Ng = NormalizedOr((p1 - p0).cross(p2 - p0), V3f(0, 0, 1));
     hit.N = g.Ng;
     if (!mesh.cornerNormals.empty()) {
         const V3f* n = &mesh.cornerNormals[3 * primID];
-        hit.N = SafeNormalize(b0 * n[0] + b1 * n[1] + b2 * n[2], g.Ng);
+        hit.N = NormalizedOr(b0 * n[0] + b1 * n[1] + b2 * n[2], g.Ng);
     } else if (!mesh.normals.empty()) {
-        hit.N = SafeNormalize(
+        hit.N = NormalizedOr(
             b0 * mesh.normals[idx[0]] + b1 * mesh.normals[idx[1]] + b2 * mesh.normals[idx[2]],
             g.Ng);
     }
@@ -202,7 +198,7 @@ ObjectHit EvaluateQuadricAt(const QuadricShape& shape, const Imath::V3f& objectP
     if (normals) {
         float value[3];
         InterpolatePrimVar(*normals, hit.stencils, value);
-        hit.N = SafeNormalize(V3f(value[0], value[1], value[2]), hit.N);
+        hit.N = NormalizedOr(V3f(value[0], value[1], value[2]), hit.N);
     }
     return hit;
 }
@@ -213,7 +209,7 @@ ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float 
     ObjectHit hit;
     SurfaceGeometry& g = hit.geometry;
     g.P = objectP;
-    g.Ng = SafeNormalize(objectNg, V3f(0, 0, 1));
+    g.Ng = NormalizedOr(objectNg, V3f(0, 0, 1));
     // Embree's u runs along the segment; RenderMan's v runs along the whole curve.
     const float v0 = primID < curves.segmentV0.size() ? curves.segmentV0[primID] : 0;
     const float v1 = primID < curves.segmentV1.size() ? curves.segmentV1[primID] : 1;
@@ -237,7 +233,7 @@ ObjectHit EvaluateCurve(const CurveSet& curves, unsigned primID, float u, float 
 ObjectHit EvaluatePoint(unsigned primID, const Imath::V3f& objectP, const Imath::V3f& objectNg) {
     ObjectHit hit;
     hit.geometry.P = objectP;
-    hit.geometry.Ng = SafeNormalize(objectNg, V3f(0, 0, 1));
+    hit.geometry.Ng = NormalizedOr(objectNg, V3f(0, 0, 1));
     hit.N = hit.geometry.Ng;
     hit.stencils.uniform = 0;
     hit.stencils.varying = hit.stencils.vertex = hit.stencils.faceVarying =

@@ -28,11 +28,14 @@ inline Imath::V3f TransformNormal(const Imath::M44f& objectFromSpace, const Imat
                       n.x * m[2][0] + n.y * m[2][1] + n.z * m[2][2]);
 }
 
-// Unit length, or +z for a zero vector (a degenerate normal). One division, not three: every
-// hit normalises its normals.
-inline Imath::V3f Normalized(const Imath::V3f& v) {
+// Unit length, or `fallback` for a zero vector. One division, not three: every hit normalises
+// its normals.
+inline Imath::V3f NormalizedOr(const Imath::V3f& v, const Imath::V3f& fallback) {
     const float len = v.length();
-    return len > 0 ? v * (1 / len) : Imath::V3f(0, 0, 1);
+    return len > 0 ? v * (1 / len) : fallback;
 }
+
+// Unit length, or +z for a zero vector (a degenerate normal).
+inline Imath::V3f Normalized(const Imath::V3f& v) { return NormalizedOr(v, Imath::V3f(0, 0, 1)); }
 
 }  // namespace gonio
