@@ -81,6 +81,7 @@ void RevolvedQuadric::SetSphericalSurface(double radius) {
     SetBoundingBall(V3d(0, 0, 0), radius);
     spherical_ = true;
     sphereRadius2_ = radius * radius;
+    completeSphere_ = {sphereRadius2_, ballRadius2_};
 }
 
 int RevolvedQuadric::ProfileDirections(const V3d& p, V2d along[2]) const {
@@ -149,6 +150,7 @@ int RevolvedQuadric::SphereRoots(double missed2, double dd, double lo, double hi
 bool RevolvedQuadric::IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax,
                                      float* tHit, V3f* point) const {
     if (degenerate_) return false;
+    if (IsCompleteSphere()) return completeSphere_.Intersect(org, dir, tmin, tmax, tHit, point);
     const V3d d(dir.x, dir.y, dir.z);
     const double dd = d.dot(d);
     if (!(dd > 0) || !std::isfinite(dd)) return false;

@@ -96,6 +96,9 @@ class RevolvedQuadric : public Quadric {
                    QuadricHit* hit) const final;
     bool IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax, float* t,
                         V3f* point) const final;
+    const CompleteSphere* AsCompleteSphere() const final {
+        return IsCompleteSphere() ? &completeSphere_ : nullptr;
+    }
     V2f ParametersAt(const V3f& point) const final;
     V3f NormalAt(const V3f& point) const final;
     SurfaceGeometry Evaluate(float u, float v) const final;
@@ -162,6 +165,7 @@ class RevolvedQuadric : public Quadric {
 
   private:
     bool OnShape(const V3d& p) const;
+    bool IsCompleteSphere() const { return spherical_ && everyRootOnShape_ && !degenerate_; }
     // The (u, v) of the surface point p (see ParametersAt), in *u, *v; returns the slack that
     // it took (0: p lies on the shape as IntersectPoint decided), or −1 where none did.
     double FindParameters(const V3d& p, double* u, double* v) const;
@@ -171,6 +175,7 @@ class RevolvedQuadric : public Quadric {
     bool everyRootOnShape_ = false;
     bool spherical_ = false;
     double sphereRadius2_ = 0;
+    CompleteSphere completeSphere_{};  // the spherical surface and its ball
     V3d center_{0, 0, 0};
     Box3f bounds_;
     V3d ballCentre_{0, 0, 0};

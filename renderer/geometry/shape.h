@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "renderer/geometry/complete_sphere.h"
 #include "renderer/geometry/primvar.h"
 
 namespace gonio {
@@ -72,6 +73,9 @@ class Quadric {
     // cost inverse trigonometry that deciding a hit on a full sweep does not need.
     virtual bool IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax, float* t,
                                 V3f* point) const = 0;
+    // A whole sphere's own ray test, which IntersectPoint calls, for the ray tracer's callback
+    // to call inline; null for every other quadric.
+    virtual const CompleteSphere* AsCompleteSphere() const { return nullptr; }
     // The (u, v) of a point IntersectPoint reported (Intersect's (u, v) up to rounding).
     virtual V2f ParametersAt(const V3f& point) const = 0;
     // A normal at a point IntersectPoint reported, without (u, v): not normalised, facing

@@ -26,8 +26,8 @@ struct RayHit {
     Imath::V3f Ng;
     // A quadric's hit point in its object space, from which Evaluate derives (u, v) and the
     // normal (u, v above are then 0). Zero for the other kinds.
-    Imath::V3f objectP;  // A CSG hit on the surface of a subtracting or intersecting solid whose
-                         // outward normal is
+    Imath::V3f objectP;
+    // A CSG hit on the surface of a subtracting or intersecting solid whose outward normal is
     // the reverse of the combined solid's there (RISpec 3.2 §5.9): Evaluate turns it round.
     bool flipNormal = false;
 };

@@ -60,8 +60,10 @@ bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, un
     const V3f org = q->translationOnly ? V3f(ox + m[3][0], oy + m[3][1], oz + m[3][2])
                                        : AffinePoint(m, ox, oy, oz);
     const V3f dir = q->translationOnly ? V3f(dx, dy, dz) : AffineVector(m, dx, dy, dz);
-    return q->quadric->IntersectPoint(org, dir, RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i),
-                                      t, objectP);
+    const float tnear = RTCRayN_tnear(rays, N, i), tfar = RTCRayN_tfar(rays, N, i);
+    // The whole sphere, most quadrics, without the virtual call (the same test).
+    if (q->sphere) return q->sphere->Intersect(org, dir, tnear, tfar, t, objectP);
+    return q->quadric->IntersectPoint(org, dir, tnear, tfar, t, objectP);
 }
 
 void QuadricIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -155,8 +157,9 @@ RTCGeometry RayScene::Impl::MakeQuadric(GeometryRecord& record, const QuadricSha
     bool translationOnly = true;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) translationOnly &= m[r][c] == (r == c ? 1.f : 0.f);
-    record.quadric = std::make_unique<QuadricGeometry>(QuadricGeometry{
-        shape.quadric.get(), record.objectFromSpace, record.spaceFromObject, translationOnly});
+    record.quadric = std::make_unique<QuadricGeometry>(
+        QuadricGeometry{shape.quadric.get(), record.objectFromSpace, record.spaceFromObject,
+                        translationOnly, shape.quadric->AsCompleteSphere()});
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(g, 1);
     rtcSetGeometryUserData(g, record.quadric.get());

@@ -29,6 +29,7 @@ struct QuadricGeometry {
     // objectFromSpace only moves (its linear part is exactly the identity), as the transform of
     // most quadrics does: the callback then only adds the offset, with the same result.
     bool translationOnly;
+    const CompleteSphere* sphere;  // quadric->AsCompleteSphere()
 };
 
 // What we keep for each Embree geometry, to evaluate its hits.

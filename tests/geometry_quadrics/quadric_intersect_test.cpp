@@ -317,5 +317,30 @@ TEST(QuadricRays, SpindleTorusAndOverSweptSphere) {
     EXPECT_NEAR(hit.u, 0.125, 1e-6);
 }
 
+TEST(QuadricRays, OnlyWholeSpheresHaveTheCompleteSphereTest) {
+    // The ray tracer's callback calls AsCompleteSphere's test in place of IntersectPoint: only
+    // a sphere with nothing cut away may have one, as it clips nothing.
+    EXPECT_NE(MakeSphere(1, -1, 1, 360)->AsCompleteSphere(), nullptr);
+    EXPECT_NE(MakeSphere(-2, -3, 3, 720)->AsCompleteSphere(), nullptr);  // zmin, zmax beyond r
+    EXPECT_EQ(MakeSphere(1, -0.5f, 1, 360)->AsCompleteSphere(), nullptr);
+    EXPECT_EQ(MakeSphere(1, -1, 1, 270)->AsCompleteSphere(), nullptr);
+    EXPECT_EQ(MakeSphere(0, -1, 1, 360)->AsCompleteSphere(), nullptr);  // degenerate
+    EXPECT_EQ(MakeCylinder(1, -1, 1, 360)->AsCompleteSphere(), nullptr);
+    EXPECT_EQ(MakeTorus(1, 0.5f, 0, 360, 360)->AsCompleteSphere(), nullptr);
+    EXPECT_NE(MakeTorus(0, 1, 0, 360, 360)->AsCompleteSphere(), nullptr);  // a sphere twice over
+    // It reports IntersectPoint's hits: the nearer root past tmin, else the farther one.
+    const CompleteSphere& sphere = *MakeSphere(2, -2, 2, 360)->AsCompleteSphere();
+    float t;
+    V3f p;
+    ASSERT_TRUE(sphere.Intersect(V3f(0, 0, 5), V3f(0, 0, -2), 0, kInfinity, &t, &p));
+    EXPECT_FLOAT_EQ(t, 1.5f);
+    EXPECT_EQ(p, V3f(0, 0, 2));
+    ASSERT_TRUE(sphere.Intersect(V3f(0, 0, 5), V3f(0, 0, -2), 1.6f, kInfinity, &t, &p));
+    EXPECT_FLOAT_EQ(t, 3.5f);
+    EXPECT_EQ(p, V3f(0, 0, -2));
+    EXPECT_FALSE(sphere.Intersect(V3f(0, 0, 5), V3f(0, 0, -2), 1.6f, 3.4f, &t, &p));
+    EXPECT_FALSE(sphere.Intersect(V3f(2.01f, 0, 5), V3f(0, 0, -1), 0, kInfinity, &t, &p));
+}
+
 }  // namespace
 }  // namespace gonio::test
