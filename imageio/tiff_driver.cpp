@@ -1,6 +1,10 @@
 // TIFF through libtiff, tagged as OpenImageIO 2.4's TIFF writer tags it: strips of 32 rows,
 // deflate with the horizontal (integer) or floating-point predictor by default, associated
 // alpha, the data window's origin as XPosition/YPosition and the frame as Pixar's full size.
+// Deflate-compressed integer strips are encoded here in parallel (libdeflate), the rest by
+// libtiff's codecs.
+#include <libdeflate.h>
+#include <tbb/parallel_for.h>
 #include <tiffio.h>
 
 #include <algorithm>
@@ -26,18 +30,6 @@ int CompressionCode(const std::string& name) {
 
 int BitsPerSample(PixelType type) {
     return type == PixelType::UInt8 ? 8 : type == PixelType::UInt16 ? 16 : 32;
-}
-
-void SetCompression(TIFF* tif, const ImageFileSpec& spec, PixelType type) {
-    const auto [name, quality] =
-        SplitCompression(spec.compression.empty() ? "zip" : spec.compression);
-    const int code = CompressionCode(name);
-    TIFFSetField(tif, TIFFTAG_COMPRESSION, code);
-    if (code != COMPRESSION_LZW && code != COMPRESSION_ADOBE_DEFLATE) return;
-    TIFFSetField(tif, TIFFTAG_PREDICTOR,
-                 type == PixelType::Float ? PREDICTOR_FLOATINGPOINT : PREDICTOR_HORIZONTAL);
-    if (code == COMPRESSION_ADOBE_DEFLATE)
-        TIFFSetField(tif, TIFFTAG_ZIPQUALITY, std::clamp(quality > 0 ? quality : 6, 1, 9));
 }
 
 void SetExtraSamples(TIFF* tif, const ImageFileSpec& spec) {
@@ -89,6 +81,94 @@ void KeepError(const char* module, const char* format, va_list args) {
     tiffError = module ? std::string(module) + ": " + text : text;
 }
 
+// How the strips are encoded: libtiff's codec (one strip after another), or deflate with the
+// horizontal predictor here, all strips at once.
+struct StripCoding {
+    bool parallel = false;
+    int quality = 6;  // TIFFTAG_ZIPQUALITY, zlib's level
+    int level = 7;    // libdeflate's for that quality, for the parallel encoding
+};
+
+StripCoding ChooseStripCoding(const ImageFileSpec& spec, PixelType type) {
+    const auto [name, quality] =
+        SplitCompression(spec.compression.empty() ? "zip" : spec.compression);
+    StripCoding coding;
+    coding.parallel =
+        CompressionCode(name) == COMPRESSION_ADOBE_DEFLATE && type != PixelType::Float;
+    coding.quality = std::clamp(quality > 0 ? quality : 6, 1, 9);
+    // libtiff 4.5 compresses with libdeflate at zlib's levels up to 5 and one above from 6 on
+    // (tested: the strips are libtiff's byte for byte at every quality).
+    coding.level = coding.quality <= 5 ? coding.quality : coding.quality + 1;
+    return coding;
+}
+
+void SetCompression(TIFF* tif, const ImageFileSpec& spec, PixelType type) {
+    const auto [name, quality] =
+        SplitCompression(spec.compression.empty() ? "zip" : spec.compression);
+    const int code = CompressionCode(name);
+    TIFFSetField(tif, TIFFTAG_COMPRESSION, code);
+    if (code != COMPRESSION_LZW && code != COMPRESSION_ADOBE_DEFLATE) return;
+    TIFFSetField(tif, TIFFTAG_PREDICTOR,
+                 type == PixelType::Float ? PREDICTOR_FLOATINGPOINT : PREDICTOR_HORIZONTAL);
+    if (code == COMPRESSION_ADOBE_DEFLATE)
+        TIFFSetField(tif, TIFFTAG_ZIPQUALITY, ChooseStripCoding(spec, type).quality);
+}
+
+// TIFF's horizontal predictor (TIFF 6.0 §14) on one row of `samples` integers, n to a pixel:
+// each sample becomes its difference from the same channel of the pixel before, modulo 2^bits.
+template <class T>
+void DifferenceRow(T* row, size_t samples, size_t n) {
+    for (size_t i = samples; i-- > n;) row[i] = T(row[i] - row[i - n]);
+}
+
+// The strips of a deflate-compressed integer image, each predicted and compressed on its own
+// (they are independent in the file), side by side: serial, deflate is the longest part of
+// writing a frame. libdeflate is the library libtiff's own codec uses, at the same level.
+std::string WriteDeflateStrips(TIFF* tif, const ImageFileSpec& spec, const PixelBuffer& pixels,
+                               int level) {
+    const size_t n = size_t(spec.Channels()), bytesPerSample = BitsPerSample(pixels.type) / 8;
+    const size_t rowBytes = size_t(spec.width) * n * bytesPerSample;
+    const int strips = (spec.height + kRowsPerStrip - 1) / kRowsPerStrip;
+    std::vector<std::vector<unsigned char>> encoded(static_cast<size_t>(strips));
+    std::vector<uint8_t> failed(static_cast<size_t>(strips), 0);
+    const auto encode = [&](int strip) {
+        const int y = strip * kRowsPerStrip, rows = std::min(kRowsPerStrip, spec.height - y);
+        const auto* first = static_cast<const unsigned char*>(pixels.data) + size_t(y) * rowBytes;
+        std::vector<unsigned char> raw(first, first + rowBytes * size_t(rows));
+        for (int r = 0; r < rows; ++r) {
+            unsigned char* row = raw.data() + size_t(r) * rowBytes;
+            if (bytesPerSample == 1)
+                DifferenceRow(row, rowBytes, n);
+            else
+                DifferenceRow(reinterpret_cast<uint16_t*>(row), rowBytes / 2, n);
+        }
+        std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)> compressor(
+            libdeflate_alloc_compressor(level), libdeflate_free_compressor);
+        std::vector<unsigned char>& out = encoded[size_t(strip)];
+        if (!compressor) {
+            failed[size_t(strip)] = 1;
+            return;
+        }
+        out.resize(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
+        out.resize(libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), out.data(),
+                                            out.size()));
+        failed[size_t(strip)] = out.empty();
+    };
+    // A one-strip image (a small or empty frame) on this thread: a parallel loop would start
+    // oneTBB's workers for nothing.
+    if (strips > 1)
+        tbb::parallel_for(0, strips, encode);
+    else if (strips == 1)
+        encode(0);
+    for (int strip = 0; strip < strips; ++strip) {
+        std::vector<unsigned char>& out = encoded[size_t(strip)];
+        if (failed[size_t(strip)]) return "deflate could not compress a strip";
+        if (TIFFWriteRawStrip(tif, uint32_t(strip), out.data(), tmsize_t(out.size())) < 0)
+            return tiffError.empty() ? "libtiff could not write a strip" : tiffError;
+    }
+    return "";
+}
+
 }  // namespace
 
 std::string WriteTiffFile(const std::string& path, const ImageFileSpec& spec,
@@ -114,8 +194,14 @@ std::string WriteTiffFile(const std::string& path, const ImageFileSpec& spec,
     TIFFSetField(tif.get(), TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
     SetMetadata(tif.get(), spec);
     TIFFCheckpointDirectory(tif.get());  // the directory first, as OpenImageIO lays files out
-    // Strip by strip, as OpenImageIO writes; libtiff encodes in place (the predictor), so each
-    // strip is copied first.
+    if (const StripCoding coding = ChooseStripCoding(spec, pixels.type); coding.parallel) {
+        const std::string error = WriteDeflateStrips(tif.get(), spec, pixels, coding.level);
+        if (!error.empty()) return error;
+        if (!TIFFFlush(tif.get())) return tiffError.empty() ? "libtiff could not write" : tiffError;
+        return "";
+    }
+    // The other codecs strip by strip, as OpenImageIO writes; libtiff encodes in place (the
+    // predictor), so each strip is copied first.
     const size_t rowBytes = size_t(spec.width) * n * BitsPerSample(pixels.type) / 8;
     std::vector<unsigned char> strip(rowBytes * kRowsPerStrip);
     for (int y = 0; y < spec.height; y += kRowsPerStrip) {
