@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace gonio {
 namespace {
@@ -11,6 +13,24 @@ namespace {
 constexpr float kDistanceInCells = 2;
 // Normals further apart than about 25 degrees: a crease, or the other face of a thin box.
 constexpr float kMinNormalCosine = 0.9f;
+
+// floor(v) for |v| < 2^31, without the library call that x86-64's baseline makes of std::floor.
+int FloorToInt(float v) {
+    const int i = int(v);  // towards zero
+    return i - int(v < float(i));
+}
+
+// A raster cell as one integer: cells compare in row order (by y, then x, for cells at
+// non-negative positions; any order groups a cell's hits together).
+uint64_t CellKey(int x, int y) { return uint64_t(uint32_t(y)) << 32 | uint32_t(x); }
+
+// A hit's squared distance from its cell's centre, then its index, as one integer: a
+// non-negative float's bits order as the float does.
+uint64_t NearnessKey(float centreDistance2, int hit) {
+    uint32_t bits;
+    std::memcpy(&bits, &centreDistance2, sizeof bits);
+    return uint64_t(bits) << 32 | uint32_t(hit);
+}
 
 }  // namespace
 
@@ -37,23 +57,20 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
     cells_.resize(size_t(n));
     for (int i = 0; i < n; ++i) {
         const float cx = hits[i].x * cellsPerPixel, cy = hits[i].y * cellsPerPixel;
-        const float fx = std::floor(cx), fy = std::floor(cy);
-        const float dx = cx - fx - 0.5f, dy = cy - fy - 0.5f;
-        cells_[i] = {(long long)fx, (long long)fy, dx * dx + dy * dy, i};
+        const int ix = FloorToInt(cx), iy = FloorToInt(cy);
+        const float dx = cx - float(ix) - 0.5f, dy = cy - float(iy) - 0.5f;
+        cells_[i] = {CellKey(ix, iy), NearnessKey(dx * dx + dy * dy, i)};
     }
     // Hits come in sample order, pixel by pixel, so at rates up to a pixel their cells are
     // already in order; otherwise group them, keeping sample order within a cell.
-    auto cellBefore = [](const CellEntry& a, const CellEntry& b) {
-        return a.cellY != b.cellY ? a.cellY < b.cellY : a.cellX < b.cellX;
-    };
+    auto cellBefore = [](const CellEntry& a, const CellEntry& b) { return a.cell < b.cell; };
     if (!std::is_sorted(cells_.begin(), cells_.end(), cellBefore))
         std::stable_sort(cells_.begin(), cells_.end(), cellBefore);
     // Within a cell, the hits nearest its centre come first and are the ones shaded: shading
     // the first sample instead would shift every highlight and texture by most of a stratum
     // towards the cell's corner. Ties go to the earlier sample, so the order is fixed.
     auto nearerTheCentre = [](const CellEntry& a, const CellEntry& b) {
-        return a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance
-                                                    : a.hit < b.hit;
+        return a.nearness < b.nearness;
     };
     shadedBy->assign(size_t(n), -1);
     // The hits of one cell, in that order: each takes the first one before it that is shaded
@@ -61,10 +78,10 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
     const auto share = [&](std::vector<CellEntry>::iterator first,
                            std::vector<CellEntry>::iterator last) {
         for (auto i = first; i != last; ++i) {
-            const int hit = i->hit;
+            const int hit = i->Hit();
             (*shadedBy)[hit] = hit;
             for (auto j = first; j != i; ++j) {
-                const int candidate = j->hit;
+                const int candidate = j->Hit();
                 if ((*shadedBy)[candidate] != candidate) continue;
                 if (CanShare(hits[hit], hits[candidate], cell)) {
                     (*shadedBy)[hit] = candidate;
@@ -81,12 +98,12 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
         // (another surface, a fold) are sorted and shared among themselves. That is the same
         // as sharing the whole sorted cell, as none of the others is shaded itself.
         std::iter_swap(first, std::min_element(first, last, nearerTheCentre));
-        const int nearest = first->hit;
+        const int nearest = first->Hit();
         (*shadedBy)[nearest] = nearest;
         auto rest = std::partition(first + 1, last, [&](const CellEntry& e) {
-            return CanShare(hits[e.hit], hits[nearest], cell);
+            return CanShare(hits[e.Hit()], hits[nearest], cell);
         });
-        for (auto i = first + 1; i != rest; ++i) (*shadedBy)[i->hit] = nearest;
+        for (auto i = first + 1; i != rest; ++i) (*shadedBy)[i->Hit()] = nearest;
         if (rest != last) {
             std::sort(rest, last, nearerTheCentre);
             share(rest, last);

@@ -12,6 +12,7 @@
 
 #include <Imath/ImathVec.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "renderer/raytrace/surface_point.h"
@@ -51,9 +52,9 @@ class ShadingPointSharing {
     // Cluster's scratch, kept from batch to batch: each hit's raster cell, and the numbers of
     // the shaded hits.
     struct CellEntry {
-        long long cellX, cellY;
-        float centreDistance;  // squared, in cell widths
-        int hit;               // index into `hits`
+        uint64_t cell;      // the raster cell (CellKey)
+        uint64_t nearness;  // squared distance from the cell's centre, then the hit's index
+        int Hit() const { return int(uint32_t(nearness)); }  // its index into `hits`
     };
     std::vector<CellEntry> cells_;
     std::vector<int> scratchNumbers_;
