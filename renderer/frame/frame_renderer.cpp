@@ -36,22 +36,31 @@ int OutputFloats(const std::vector<ShaderOutput>& outputs) {
 
 // One camera sample on its way through the scene: transparent surfaces let it go on, so its
 // colour is composited front to back over several layers of hits. Trivially copyable (its
-// AOVs live in TileRenderer::sampleOutputs_), so a tile's samples are filled in place and
-// copied, never zeroed one by one.
+// AOVs live in TileRenderer::sampleOutputs_): a tile's samples are filled in place, every field
+// set by SampleGenerator (Reset, then the sample's own), never constructed one by one.
 struct SampleState {
     CameraRay ray;
     int px, py;
     float x, y;
-    float lensU = 0, lensV = 0;
-    float colour[3] = {0, 0, 0};
-    float transmittance[3] = {1, 1, 1};
+    float lensU, lensV;
+    float colour[3];
+    float transmittance[3];
     // Coverage by visible surfaces; matte objects hide what is behind them but add none.
-    float alpha = 0;
-    float depth = std::numeric_limits<float>::infinity();
+    float alpha;
+    float depth;
     // Seeds the random() streams of the points this sample hits: a hash of the render's seed,
     // the pixel and the sample, mixed on at each layer.
-    uint64_t randomSeed = 0;
-    int layers = 0;  // how many times its ray has looked for its next hit
+    uint64_t randomSeed;
+    int layers;  // how many times its ray has looked for its next hit
+
+    // What nothing has been composited into yet.
+    void Reset() {
+        for (int c = 0; c < 3; ++c) colour[c] = 0, transmittance[c] = 1;
+        lensU = lensV = 0;
+        alpha = 0;
+        depth = std::numeric_limits<float>::infinity();
+        layers = 0;
+    }
 };
 
 // The camera samples of a tile's pixels: stratified, one jittered sample in each cell of the
@@ -70,22 +79,28 @@ class SampleGenerator {
           shutterLength_(std::max(0.f, options.shutterClose - options.shutterOpen)),
           camera_(camera) {}
 
-    void AddSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
+    // Makes *samples those of `pixels`, pixel by pixel (its storage is kept from tile to tile).
+    void MakeSamples(const Imath::Box2i& pixels, std::vector<SampleState>* samples) const {
+        const size_t perPixel = size_t(xsamples_) * size_t(ysamples_);
+        samples->resize(size_t(pixels.max.x - pixels.min.x + 1) *
+                        size_t(pixels.max.y - pixels.min.y + 1) * perPixel);
+        SampleState* sample = samples->data();
         for (int py = pixels.min.y; py <= pixels.max.y; ++py)
             for (int px = pixels.min.x; px <= pixels.max.x; ++px) {
                 const uint64_t pixelHash = SampleRandom::PixelHash(seed_, px, py);
                 for (int sy = 0, s = 0; sy < ysamples_; ++sy)
                     for (int sx = 0; sx < xsamples_; ++sx, ++s)
-                        FillSample(pixelHash, px, py, sx, sy, s, &samples->emplace_back());
+                        FillSample(pixelHash, px, py, sx, sy, s, sample++);
             }
     }
 
   private:
-    // Fills a new (default) sample s = sy * xsamples + sx of pixel (px, py) in place.
+    // Fills sample s = sy * xsamples + sx of pixel (px, py) in place, every field.
     void FillSample(uint64_t pixelHash, int px, int py, int sx, int sy, int s,
                     SampleState* out) const {
         SampleRandom random(pixelHash, s);
         SampleState& sample = *out;
+        sample.Reset();
         sample.px = px, sample.py = py;
         sample.randomSeed = random.Seed();
         sample.x = px + (sx + random.Next()) * cellWidth_;
@@ -151,6 +166,7 @@ class TileRenderer {
     TransparentLayers layers_;  // a layer's hits, by sample: HitAt(k).ray
     ShadingBatch batch_;
     std::vector<float> Ci_, Oi_, outputValues_, filmPositions_, filmValues_;
+    std::vector<float> shadedRgb_, shadedOpacityRgb_;  // per shaded point of a group, 3 each
     std::vector<ShadingPointHit> sharingHits_;
     std::vector<int> shaded_, shadedBy_;
     // Shades one group of a layer's hits and composites them into their samples.
@@ -235,8 +251,7 @@ void TileRenderer::OpacityToRgb(const float* opacity, float* rgb) const {
 
 void TileRenderer::Render(const Imath::Box2i& pixels, const SampleGenerator& generator,
                           FilmTile* film) {
-    samples_.clear();
-    generator.AddSamples(pixels, &samples_);
+    generator.MakeSamples(pixels, &samples_);
     sampleOutputs_.assign(samples_.size() * size_t(outputFloats_), 0.f);
     if (paths_)
         TracePaths();
@@ -365,16 +380,24 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         batch.outputValues = outputValues_.data();
     }
     if (!attributes->matte) shading_.Shade(batch, Ci_.data(), Oi_.data());
+    // Each shaded point's colour and opacity in RGB, once for all the samples that show it.
+    shadedRgb_.resize(3 * shaded_.size());
+    shadedOpacityRgb_.resize(3 * shaded_.size());
+    for (size_t r = 0; r < shaded_.size(); ++r) {
+        // A matte object's opacity is the surface's Os, not a shader's output (and a matte
+        // group shades every member).
+        const float* opacities = attributes->matte
+                                     ? layers_.PointAt(members[size_t(shaded_[r])]).Os.data()
+                                     : &Oi_[r * ncomps_];
+        ToRgb(&Ci_[r * ncomps_], &shadedRgb_[3 * r]);
+        OpacityToRgb(opacities, &shadedOpacityRgb_[3 * r]);
+    }
     for (size_t j = 0; j < members.size(); ++j) {
         const int ray = layers_.HitAt(members[j]).ray;
         SampleState& sample = samples_[size_t(ray)];
         const size_t r = size_t(shadedBy_[j]);  // the shaded point this sample shows
-        // A matte object's opacity is the surface's Os, not a shader's output.
-        const float* opacities =
-            attributes->matte ? layers_.PointAt(members[j]).Os.data() : &Oi_[r * ncomps_];
-        float rgb[3], opacityRgb[3];
-        ToRgb(&Ci_[r * ncomps_], rgb);
-        OpacityToRgb(opacities, opacityRgb);
+        const float* rgb = &shadedRgb_[3 * r];
+        const float* opacityRgb = &shadedOpacityRgb_[3 * r];
         float covered = 0;
         for (int c = 0; c < 3; ++c)
             covered += sample.transmittance[c] * std::clamp(opacityRgb[c], 0.f, 1.f);
