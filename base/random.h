@@ -23,8 +23,10 @@ class SampleRandom {
     // Passes over n values unread: the ones after them stay what they would have been.
     void Skip(int n) { state_ += uint64_t(n) * kSplitMix64Step; }
     // A seed for another stream of this pixel sample (the shaders' random()), independent of
-    // this one's values.
-    uint64_t Seed() const { return MixBits(state_ ^ 0x5eedc0de5eedc0deull); }
+    // this one's values: MixBits(SeedKey()), which a caller that may never use it keeps
+    // instead (the hash is most of the work).
+    uint64_t Seed() const { return MixBits(SeedKey()); }
+    uint64_t SeedKey() const { return state_ ^ 0x5eedc0de5eedc0deull; }
 
   private:
     uint64_t state_;

@@ -48,9 +48,11 @@ struct SampleState {
     // Coverage by visible surfaces; matte objects hide what is behind them but add none.
     float alpha;
     float depth;
-    // Seeds the random() streams of the points this sample hits: a hash of the render's seed,
-    // the pixel and the sample, mixed on at each layer.
-    uint64_t randomSeed;
+    // Seeds the random() streams of the points this sample hits, a hash of the render's seed,
+    // the pixel and the sample, mixed on at each layer: the seed is MixBits(randomKey) (see
+    // SampleRandom::SeedKey), hashed only for the hits that are shaded.
+    uint64_t randomKey;
+    uint64_t RandomSeed() const { return MixBits(randomKey); }
     int layers;  // how many times its ray has looked for its next hit
 
     // What nothing has been composited into yet.
@@ -102,7 +104,7 @@ class SampleGenerator {
         SampleState& sample = *out;
         sample.Reset();
         sample.px = px, sample.py = py;
-        sample.randomSeed = random.Seed();
+        sample.randomKey = random.SeedKey();
         sample.x = px + (sx + random.Next()) * cellWidth_;
         sample.y = py + (sy + random.Next()) * cellHeight_;
         // Values nothing reads are not drawn (but skipped: the stream stays the same).
@@ -217,12 +219,13 @@ void TileRenderer::ChooseShadedPoints(const Attributes& attributes,
         shadedBy_ = shaded_;
         return;
     }
-    sharingHits_.resize(size_t(n));
+    // Appended, not resized: groups of alternating sizes would fill the new entries with zeros.
+    sharingHits_.clear();
     for (int j = 0; j < n; ++j) {
         const int k = members[j];
         const TransparentLayers::Hit& hit = layers_.HitAt(k);
         const SampleState& sample = samples_[size_t(hit.ray)];
-        sharingHits_[j] = {sample.x, sample.y, hit.t, sample.ray.dir, &layers_.PointAt(k)};
+        sharingHits_.push_back({sample.x, sample.y, hit.t, sample.ray.dir, &layers_.PointAt(k)});
     }
     sharing_.Cluster(sharingHits_, attributes.shadingRate, &shaded_, &shadedBy_);
 }
@@ -299,7 +302,7 @@ void TileRenderer::TracePaths() {
     radiance_.resize(size_t(ncomps_));
     for (SampleState& sample : samples_) {
         float depth = 0;
-        if (!paths_->Radiance(sample.ray, sample.randomSeed, radiance_.data(), &depth)) continue;
+        if (!paths_->Radiance(sample.ray, sample.RandomSeed(), radiance_.data(), &depth)) continue;
         ToRgb(radiance_.data(), sample.colour);
         sample.alpha = 1;
         sample.depth = depth;
@@ -370,7 +373,7 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
         batch.incident.push_back(sample.ray.dir * hit.t);
         batch.depth.push_back(hit.t);
         if (neighbours) batch.neighbourRays.push_back(MakeNeighbourRays(sample, hit.tnear));
-        batch.randomSeeds.push_back(sample.randomSeed);
+        batch.randomSeeds.push_back(sample.RandomSeed());
     }
     Ci_.assign(shaded_.size() * ncomps_, 0.f);
     Oi_.assign(shaded_.size() * ncomps_, 0.f);
@@ -406,7 +409,7 @@ void TileRenderer::ShadeGroup(const TransparentLayers::Group& group) {
                            sample.transmittance) < kNegligibleTransmittance)
             layers_.Stop(ray);
         else
-            sample.randomSeed = MixBits(sample.randomSeed);  // the next layer's
+            sample.randomKey = MixBits(sample.randomKey);  // the next layer's seed's
         if (attributes->matte) continue;
         sample.alpha += covered;
         // AOVs are not premultiplied: each layer adds its value weighted by the coverage it
