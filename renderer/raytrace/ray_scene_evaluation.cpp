@@ -90,24 +90,6 @@ bool RayScene::InterpolatePrimVar(const SurfacePoint& sp, const std::string& nam
     return false;
 }
 
-const GeometryRecord& RayScene::Impl::RecordOf(const RayHit& hit) const {
-    if (hit.instID == RTC_INVALID_GEOMETRY_ID) return *top.records[hit.geomID];
-    if (hit.instID == kSolidLevel) return *solids.records[hit.geomID];
-    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
-    return *definitions[placement.level].records[hit.geomID];
-}
-
-RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
-    const GeometryRecord* record = &RecordOf(hit);
-    if (hit.instID == RTC_INVALID_GEOMETRY_ID || hit.instID == kSolidLevel)
-        return {record, record->shape->attributes.get(), nullptr};
-    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
-    const Attributes* attributes = record->shape->attributes.get();
-    if (const ObjectInstanceUse* use = placement.use)
-        attributes = use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
-    return {record, attributes, &placement};
-}
-
 void RayScene::Impl::SpaceTransforms(const InstancePlacement* placement, float time,
                                      M44f* worldFromSpace, M44f* spaceFromWorld) {
     if (!placement) {

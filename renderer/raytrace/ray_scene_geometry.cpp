@@ -49,8 +49,10 @@ void QuadricBounds(const RTCBoundsFunctionArguments* args) {
 }
 
 // Only t and the object-space hit point: (u, v) follow in Evaluate for the hit that is shaded.
-bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays, unsigned N, unsigned i, float* t,
-                         V3f* objectP) {
+// Always inline: the packet callback makes one call per ray, which GCC would keep.
+[[gnu::always_inline]] inline bool IntersectQuadricRay(const QuadricGeometry* q, RTCRayN* rays,
+                                                       unsigned N, unsigned i, float* t,
+                                                       V3f* objectP) {
     const M44f& m = q->objectFromSpace;
     const float ox = RTCRayN_org_x(rays, N, i), oy = RTCRayN_org_y(rays, N, i),
                 oz = RTCRayN_org_z(rays, N, i);

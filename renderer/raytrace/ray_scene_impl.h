@@ -170,4 +170,23 @@ struct RayScene::Impl {
                                 M44f* worldFromSpace, M44f* spaceFromWorld);
 };
 
+// Inline: every camera hit resolves its record.
+inline const GeometryRecord& RayScene::Impl::RecordOf(const RayHit& hit) const {
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID) return *top.records[hit.geomID];
+    if (hit.instID == kSolidLevel) return *solids.records[hit.geomID];
+    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
+    return *definitions[placement.level].records[hit.geomID];
+}
+
+inline RayScene::Impl::ResolvedHit RayScene::Impl::Resolve(const RayHit& hit) const {
+    const GeometryRecord* record = &RecordOf(hit);
+    if (hit.instID == RTC_INVALID_GEOMETRY_ID || hit.instID == kSolidLevel)
+        return {record, record->shape->attributes.get(), nullptr};
+    const InstancePlacement& placement = instances[top.records[hit.instID]->instance];
+    const Attributes* attributes = record->shape->attributes.get();
+    if (const ObjectInstanceUse* use = placement.use)
+        attributes = use->shapeAttributes[record->shape - use->definition->shapes.data()].get();
+    return {record, attributes, &placement};
+}
+
 }  // namespace gonio

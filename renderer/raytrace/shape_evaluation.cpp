@@ -118,10 +118,6 @@ void InterpolatePrimVar(const PrimVar& var, const ClassStencils& stencils, float
     }
 }
 
-int MeshFace(const TriangleMesh& mesh, unsigned primID) {
-    return mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
-}
-
 ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2) {
     const uint32_t* idx = &mesh.indices[3 * primID];
     const V3f& p0 = mesh.positions[idx[0]];

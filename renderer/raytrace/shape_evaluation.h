@@ -39,7 +39,9 @@ ObjectHit EvaluateMesh(const TriangleMesh& mesh, unsigned primID, float b1, floa
 ObjectHit EvaluateMeshNormals(const TriangleMesh& mesh, unsigned primID, float b1, float b2);
 // The face (of a polygon mesh) that triangle primID is part of: the index of its uniform
 // primitive variables.
-int MeshFace(const TriangleMesh& mesh, unsigned primID);
+inline int MeshFace(const TriangleMesh& mesh, unsigned primID) {
+    return mesh.faceOfTriangle.empty() ? 0 : static_cast<int>(mesh.faceOfTriangle[primID]);
+}
 void EvaluateMeshParameters(const TriangleMesh& mesh, unsigned primID, float b1, float b2,
                             ObjectHit* hit);
 // At a point the quadric's IntersectPoint reported (Quadric::EvaluateAt). `normals`: the

@@ -13,24 +13,6 @@ bool NextVisibleHit(const RayScene& scene, const Imath::V3f& org, const Imath::V
     return NextVisibleHitFrom(&hit, scene, org, dir, time, tfar, tnear, sp, t, rays, evaluation);
 }
 
-bool NextVisibleHitFrom(const RayHit* first, const RayScene& scene, const Imath::V3f& org,
-                        const Imath::V3f& dir, float time, float tfar, float* tnear,
-                        SurfacePoint* sp, float* t, uint64_t* rays, HitEvaluation evaluation) {
-    if (!first) return false;
-    RayHit hit = *first;
-    while (true) {
-        *tnear = ContinuePast(hit.t);
-        if (evaluation == HitEvaluation::kFull)
-            scene.Evaluate(org, dir, hit, sp);
-        else
-            scene.EvaluateGeometry(org, dir, hit, sp);
-        *t = hit.t;
-        if (sp->attributes->twoSided || sp->Ng.dot(dir) <= 0) return true;
-        ++*rays;
-        if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
-    }
-}
-
 size_t TransparentLayers::GroupHits() {
     groupIndex_.clear();
     size_t used = 0;

@@ -37,10 +37,26 @@ bool NextVisibleHit(const RayScene& scene, const Imath::V3f& org, const Imath::V
                     float tfar, float* tnear, SurfacePoint* sp, float* t, uint64_t* rays,
                     HitEvaluation evaluation = HitEvaluation::kFull);
 // The same for a ray whose nearest hit beyond *tnear is known already (`first`, or null where
-// there is none: RayScene::IntersectCoherent), which *rays counted when it was traced.
-bool NextVisibleHitFrom(const RayHit* first, const RayScene& scene, const Imath::V3f& org,
-                        const Imath::V3f& dir, float time, float tfar, float* tnear,
-                        SurfacePoint* sp, float* t, uint64_t* rays, HitEvaluation evaluation);
+// there is none: RayScene::IntersectCoherent), which *rays counted when it was traced. Inline:
+// every camera sample comes here.
+inline bool NextVisibleHitFrom(const RayHit* first, const RayScene& scene, const Imath::V3f& org,
+                               const Imath::V3f& dir, float time, float tfar, float* tnear,
+                               SurfacePoint* sp, float* t, uint64_t* rays,
+                               HitEvaluation evaluation) {
+    if (!first) return false;
+    RayHit hit = *first;
+    while (true) {
+        *tnear = ContinuePast(hit.t);
+        if (evaluation == HitEvaluation::kFull)
+            scene.Evaluate(org, dir, hit, sp);
+        else
+            scene.EvaluateGeometry(org, dir, hit, sp);
+        *t = hit.t;
+        if (sp->attributes->twoSided || sp->Ng.dot(dir) <= 0) return true;
+        ++*rays;
+        if (!scene.Intersect(org, dir, *tnear, tfar, time, &hit)) return false;
+    }
+}
 
 // One layer composited front to back over n components: colour += T·Ci (not for a matte
 // surface, which hides what is behind it and adds nothing, RISpec §4.2.5), then
