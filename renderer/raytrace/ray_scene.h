@@ -83,10 +83,11 @@ class RayScene {
     void Evaluate(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
                   SurfacePoint* sp) const;
     // Evaluate in two parts, for camera hits that may take another hit's shading (ShadingRate):
-    // EvaluateGeometry fills P, N, Ng, u, v, shape, record, attributes, the stencils and
-    // worldFromObject (what visibility and sharing look at), leaving dPdu and dPdv in object
-    // space; FinishEvaluate then makes those world space and adds Cs, Os, s and t, for the hits
-    // that are shaded. The two give exactly what Evaluate gives.
+    // EvaluateGeometry fills P, N, Ng, shape, record, attributes, the uniform stencil and
+    // worldFromObject (what visibility and sharing look at), and u, v, dPdu and dPdv (in object
+    // space) and the other stencils unless they cost more than the normals (SurfacePoint::
+    // pending); FinishEvaluate then completes those, makes the tangents world space and adds
+    // Cs, Os, s and t, for the hits that are shaded. The two give exactly what Evaluate gives.
     void EvaluateGeometry(const Imath::V3f& org, const Imath::V3f& dir, const RayHit& hit,
                           SurfacePoint* sp) const;
     void FinishEvaluate(SurfacePoint* sp) const;

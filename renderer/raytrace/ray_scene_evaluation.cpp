@@ -61,6 +61,10 @@ ObjectHit RayScene::Impl::EvaluateSubdivision(const GeometryRecord& record, cons
 
 namespace {
 
+// The record's space at the top level (a namespace constant: a function's static would be
+// tested for its initialisation at every hit).
+const M44f kWorldIsSpace;
+
 // One variable of a record at a hit: through Embree for a subdivision surface's per-vertex
 // data, through the stencils for everything else.
 void InterpolateRecordVar(const GeometryRecord& record, int index, const SurfacePoint& sp,
@@ -158,7 +162,6 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     const GeometryRecord* record = resolved.record;
     // At the top level the record's space is the world: only an instance's hit has transforms
     // to make (every camera hit comes here, so the identities are not built and copied).
-    static const M44f kIdentity;
     M44f worldFromSpace(Imath::UNINITIALIZED), spaceFromWorld(Imath::UNINITIALIZED);
     M44f objectFromPlaced(Imath::UNINITIALIZED);
     SurfacePoint& sp = *out;
@@ -197,8 +200,6 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
                                                   : spaceNg;
         sp.pending = mesh ? SurfacePoint::Pending::kMesh : SurfacePoint::Pending::kQuadric;
         sp.Ng = sp.N = flip * Normalized(worldNg);
-        sp.dPdu = sp.dPdv = V3f(0);
-        sp.u = sp.v = 0;
         sp.stencils.uniform = mesh ? MeshFace(*mesh, hit.primID) : 0;
         return;
     }
@@ -206,7 +207,7 @@ void RayScene::EvaluateGeometry(const V3f& org, const V3f& dir, const RayHit& hi
     const ObjectHit object =
         mesh ? EvaluateMeshNormals(*mesh, hit.primID, hit.u, hit.v)
              : s.EvaluateObject(*record, hit, worldP, dir,
-                                resolved.placement ? spaceFromWorld : kIdentity);
+                                resolved.placement ? spaceFromWorld : kWorldIsSpace);
     sp.dPdu = object.geometry.dPdu;  // object space until FinishEvaluate
     sp.dPdv = object.geometry.dPdv;
     sp.Ng = flip * Normalized(TransformNormal(objectFromWorld, object.geometry.Ng));
