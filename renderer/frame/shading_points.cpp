@@ -64,8 +64,8 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
     // Hits come in sample order, pixel by pixel, so at rates up to a pixel their cells are
     // already in order; otherwise group them, keeping sample order within a cell.
     auto cellBefore = [](const CellEntry& a, const CellEntry& b) { return a.cell < b.cell; };
-    if (!std::is_sorted(cells_.begin(), cells_.end(), cellBefore))
-        std::stable_sort(cells_.begin(), cells_.end(), cellBefore);
+    const bool inSampleOrder = std::is_sorted(cells_.begin(), cells_.end(), cellBefore);
+    if (!inSampleOrder) std::stable_sort(cells_.begin(), cells_.end(), cellBefore);
     // Within a cell, the hits nearest its centre come first and are the ones shaded: shading
     // the first sample instead would shift every highlight and texture by most of a stratum
     // towards the cell's corner. Ties go to the earlier sample, so the order is fixed.
@@ -73,6 +73,9 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
         return a.nearness < b.nearness;
     };
     shadedBy->assign(size_t(n), -1);
+    shaded->clear();
+    std::vector<int>& numberOf = scratchNumbers_;  // of each shaded hit, in `shaded`
+    numberOf.resize(size_t(n));
     // The hits of one cell, in that order: each takes the first one before it that is shaded
     // itself and that it can share with.
     const auto share = [&](std::vector<CellEntry>::iterator first,
@@ -90,6 +93,22 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
             }
         }
     };
+    // Numbers the shaded hits of [first, last) in sample order and points the hits there at
+    // their numbers (shadedBy holds the shaded hit itself until then).
+    const auto number = [&](std::vector<CellEntry>::iterator first,
+                            std::vector<CellEntry>::iterator last) {
+        std::vector<int>& cellShaded = scratchShaded_;
+        cellShaded.clear();
+        for (auto i = first; i != last; ++i)
+            if ((*shadedBy)[i->Hit()] == i->Hit()) cellShaded.push_back(i->Hit());
+        std::sort(cellShaded.begin(), cellShaded.end());
+        for (const int hit : cellShaded) {
+            numberOf[hit] = int(shaded->size());
+            shaded->push_back(hit);
+        }
+        for (auto i = first; i != last; ++i)
+            (*shadedBy)[i->Hit()] = numberOf[(*shadedBy)[i->Hit()]];
+    };
     for (auto first = cells_.begin(); first != cells_.end();) {
         auto last = first + 1;
         while (last != cells_.end() && !cellBefore(*first, *last)) ++last;
@@ -99,27 +118,26 @@ void ShadingPointSharing::Cluster(const std::vector<ShadingPointHit>& hits, floa
         // as sharing the whole sorted cell, as none of the others is shaded itself.
         std::iter_swap(first, std::min_element(first, last, nearerTheCentre));
         const int nearest = first->Hit();
-        (*shadedBy)[nearest] = nearest;
         auto rest = std::partition(first + 1, last, [&](const CellEntry& e) {
             return CanShare(hits[e.Hit()], hits[nearest], cell);
         });
-        for (auto i = first + 1; i != rest; ++i) (*shadedBy)[i->Hit()] = nearest;
-        if (rest != last) {
-            std::sort(rest, last, nearerTheCentre);
-            share(rest, last);
+        if (inSampleOrder && rest == last) {
+            // One shaded hit, and cells in sample order: its number is the next.
+            const int shadedNumber = int(shaded->size());
+            shaded->push_back(nearest);
+            for (auto i = first; i != last; ++i) (*shadedBy)[i->Hit()] = shadedNumber;
+        } else {
+            for (auto i = first; i != rest; ++i) (*shadedBy)[i->Hit()] = nearest;
+            if (rest != last) {
+                std::sort(rest, last, nearerTheCentre);
+                share(rest, last);
+            }
+            if (inSampleOrder) number(first, last);
         }
         first = last;
     }
-    // Number the shaded hits in sample order and point every hit at its number.
-    shaded->clear();
-    std::vector<int>& numberOf = scratchNumbers_;
-    numberOf.assign(size_t(n), -1);
-    for (int i = 0; i < n; ++i)
-        if ((*shadedBy)[i] == i) {
-            numberOf[i] = int(shaded->size());
-            shaded->push_back(i);
-        }
-    for (int i = 0; i < n; ++i) (*shadedBy)[i] = numberOf[(*shadedBy)[i]];
+    // Cells out of sample order: number the shaded hits of all of them at once.
+    if (!inSampleOrder) number(cells_.begin(), cells_.end());
 }
 
 }  // namespace gonio

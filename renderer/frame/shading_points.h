@@ -49,15 +49,15 @@ class ShadingPointSharing {
     bool CanShare(const ShadingPointHit& hit, const ShadingPointHit& shaded, float cell) const;
 
     float footprintAt0_, footprintPerDistance_;
-    // Cluster's scratch, kept from batch to batch: each hit's raster cell, and the numbers of
-    // the shaded hits.
+    // Cluster's scratch, kept from batch to batch: each hit's raster cell, the numbers of the
+    // shaded hits, and the shaded hits of a cell.
     struct CellEntry {
         uint64_t cell;      // the raster cell (CellKey)
         uint64_t nearness;  // squared distance from the cell's centre, then the hit's index
         int Hit() const { return int(uint32_t(nearness)); }  // its index into `hits`
     };
     std::vector<CellEntry> cells_;
-    std::vector<int> scratchNumbers_;
+    std::vector<int> scratchNumbers_, scratchShaded_;
 };
 
 }  // namespace gonio
