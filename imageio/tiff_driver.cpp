@@ -144,15 +144,18 @@ std::string WriteDeflateStrips(TIFF* tif, const ImageFileSpec& spec, const Pixel
         }
         std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)> compressor(
             libdeflate_alloc_compressor(level), libdeflate_free_compressor);
-        std::vector<unsigned char>& out = encoded[size_t(strip)];
         if (!compressor) {
             failed[size_t(strip)] = 1;
             return;
         }
-        out.resize(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
-        out.resize(libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), out.data(),
-                                            out.size()));
-        failed[size_t(strip)] = out.empty();
+        // Compressed into a buffer of the bound, kept at its own size: the strips of a frame
+        // wait together for their turn to be written.
+        std::vector<unsigned char> bound(
+            libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
+        const size_t size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(),
+                                                     bound.data(), bound.size());
+        encoded[size_t(strip)].assign(bound.begin(), bound.begin() + std::ptrdiff_t(size));
+        failed[size_t(strip)] = size == 0;
     };
     // A one-strip image (a small or empty frame) on this thread: a parallel loop would start
     // oneTBB's workers for nothing.
