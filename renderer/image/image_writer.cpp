@@ -1,6 +1,8 @@
 // The imaging pipeline of a Display; the file itself is written by imageio/'s drivers.
 #include "renderer/image/image_writer.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -162,7 +164,7 @@ void StorePixels(const Image& image, const std::vector<OutputChannel>& channels,
     const int n = int(channels.size());
     bytes.resize(size_t(image.width) * image.height * n * sizeof(T));
     T* const values = reinterpret_cast<T*>(bytes.data());
-    for (int y = 0; y < image.height; ++y) {
+    const auto storeRow = [&](int y) {
         for (int x = 0; x < image.width; ++x) {
             const float* in = image.At(x, y);
             T* out = &values[(size_t(y) * image.width + x) * n];
@@ -180,7 +182,14 @@ void StorePixels(const Image& image, const std::vector<OutputChannel>& channels,
                 }
             }
         }
-    }
+    };
+    // Rows side by side (the frame's last serial step otherwise), but a small frame, an empty
+    // one, on this thread: a parallel loop would start oneTBB's workers for nothing.
+    constexpr size_t kParallelPixels = 64 * 64;
+    if (size_t(image.width) * image.height >= kParallelPixels)
+        tbb::parallel_for(0, image.height, storeRow);
+    else
+        for (int y = 0; y < image.height; ++y) storeRow(y);
 }
 
 PixelData ComputePixels(const Image& image, const std::vector<OutputChannel>& channels,
