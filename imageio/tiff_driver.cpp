@@ -81,37 +81,36 @@ void KeepError(const char* module, const char* format, va_list args) {
     tiffError = module ? std::string(module) + ": " + text : text;
 }
 
-// How the strips are encoded: libtiff's codec (one strip after another), or deflate with the
-// horizontal predictor here, all strips at once.
+// How the strips are compressed: the TIFF code and zlib's level for deflate, read once from
+// the spec; and whether they are predicted and compressed here, all at once (deflate of integer
+// pixels), at libdeflate's level for that quality.
 struct StripCoding {
-    bool parallel = false;
-    int quality = 6;  // TIFFTAG_ZIPQUALITY, zlib's level
-    int level = 7;    // libdeflate's for that quality, for the parallel encoding
+    int code;
+    int quality;  // TIFFTAG_ZIPQUALITY
+    int level;    // libdeflate's, for the parallel encoding
+    bool parallel;
 };
 
 StripCoding ChooseStripCoding(const ImageFileSpec& spec, PixelType type) {
     const auto [name, quality] =
         SplitCompression(spec.compression.empty() ? "zip" : spec.compression);
     StripCoding coding;
-    coding.parallel =
-        CompressionCode(name) == COMPRESSION_ADOBE_DEFLATE && type != PixelType::Float;
+    coding.code = CompressionCode(name);
     coding.quality = std::clamp(quality > 0 ? quality : 6, 1, 9);
     // libtiff 4.5 compresses with libdeflate at zlib's levels up to 5 and one above from 6 on
     // (tested: the strips are libtiff's byte for byte at every quality).
     coding.level = coding.quality <= 5 ? coding.quality : coding.quality + 1;
+    coding.parallel = coding.code == COMPRESSION_ADOBE_DEFLATE && type != PixelType::Float;
     return coding;
 }
 
-void SetCompression(TIFF* tif, const ImageFileSpec& spec, PixelType type) {
-    const auto [name, quality] =
-        SplitCompression(spec.compression.empty() ? "zip" : spec.compression);
-    const int code = CompressionCode(name);
-    TIFFSetField(tif, TIFFTAG_COMPRESSION, code);
-    if (code != COMPRESSION_LZW && code != COMPRESSION_ADOBE_DEFLATE) return;
+void SetCompression(TIFF* tif, const StripCoding& coding, PixelType type) {
+    TIFFSetField(tif, TIFFTAG_COMPRESSION, coding.code);
+    if (coding.code != COMPRESSION_LZW && coding.code != COMPRESSION_ADOBE_DEFLATE) return;
     TIFFSetField(tif, TIFFTAG_PREDICTOR,
                  type == PixelType::Float ? PREDICTOR_FLOATINGPOINT : PREDICTOR_HORIZONTAL);
-    if (code == COMPRESSION_ADOBE_DEFLATE)
-        TIFFSetField(tif, TIFFTAG_ZIPQUALITY, ChooseStripCoding(spec, type).quality);
+    if (coding.code == COMPRESSION_ADOBE_DEFLATE)
+        TIFFSetField(tif, TIFFTAG_ZIPQUALITY, coding.quality);
 }
 
 // TIFF's horizontal predictor (TIFF 6.0 §14) on one row of `samples` integers, n to a pixel:
@@ -129,8 +128,8 @@ std::string WriteDeflateStrips(TIFF* tif, const ImageFileSpec& spec, const Pixel
     const size_t n = size_t(spec.Channels()), bytesPerSample = BitsPerSample(pixels.type) / 8;
     const size_t rowBytes = size_t(spec.width) * n * bytesPerSample;
     const int strips = (spec.height + kRowsPerStrip - 1) / kRowsPerStrip;
+    // Each strip's zlib stream; empty where it could not be made (a stream never is).
     std::vector<std::vector<unsigned char>> encoded(static_cast<size_t>(strips));
-    std::vector<uint8_t> failed(static_cast<size_t>(strips), 0);
     const auto encode = [&](int strip) {
         const int y = strip * kRowsPerStrip, rows = std::min(kRowsPerStrip, spec.height - y);
         const auto* first = static_cast<const unsigned char*>(pixels.data) + size_t(y) * rowBytes;
@@ -144,10 +143,7 @@ std::string WriteDeflateStrips(TIFF* tif, const ImageFileSpec& spec, const Pixel
         }
         std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)> compressor(
             libdeflate_alloc_compressor(level), libdeflate_free_compressor);
-        if (!compressor) {
-            failed[size_t(strip)] = 1;
-            return;
-        }
+        if (!compressor) return;
         // Compressed into a buffer of the bound, kept at its own size: the strips of a frame
         // wait together for their turn to be written.
         std::vector<unsigned char> bound(
@@ -155,7 +151,6 @@ std::string WriteDeflateStrips(TIFF* tif, const ImageFileSpec& spec, const Pixel
         const size_t size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(),
                                                      bound.data(), bound.size());
         encoded[size_t(strip)].assign(bound.begin(), bound.begin() + std::ptrdiff_t(size));
-        failed[size_t(strip)] = size == 0;
     };
     // A one-strip image (a small or empty frame) on this thread: a parallel loop would start
     // oneTBB's workers for nothing.
@@ -165,7 +160,7 @@ std::string WriteDeflateStrips(TIFF* tif, const ImageFileSpec& spec, const Pixel
         encode(0);
     for (int strip = 0; strip < strips; ++strip) {
         std::vector<unsigned char>& out = encoded[size_t(strip)];
-        if (failed[size_t(strip)]) return "deflate could not compress a strip";
+        if (out.empty()) return "deflate could not compress a strip";
         if (TIFFWriteRawStrip(tif, uint32_t(strip), out.data(), tmsize_t(out.size())) < 0)
             return tiffError.empty() ? "libtiff could not write a strip" : tiffError;
     }
@@ -191,13 +186,14 @@ std::string WriteTiffFile(const std::string& path, const ImageFileSpec& spec,
     TIFFSetField(tif.get(), TIFFTAG_BITSPERSAMPLE, uint16_t(BitsPerSample(pixels.type)));
     TIFFSetField(tif.get(), TIFFTAG_SAMPLEFORMAT,
                  pixels.type == PixelType::Float ? SAMPLEFORMAT_IEEEFP : SAMPLEFORMAT_UINT);
-    SetCompression(tif.get(), spec, pixels.type);
+    const StripCoding coding = ChooseStripCoding(spec, pixels.type);
+    SetCompression(tif.get(), coding, pixels.type);
     TIFFSetField(tif.get(), TIFFTAG_PHOTOMETRIC, n >= 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
     SetExtraSamples(tif.get(), spec);
     TIFFSetField(tif.get(), TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
     SetMetadata(tif.get(), spec);
     TIFFCheckpointDirectory(tif.get());  // the directory first, as OpenImageIO lays files out
-    if (const StripCoding coding = ChooseStripCoding(spec, pixels.type); coding.parallel) {
+    if (coding.parallel) {
         const std::string error = WriteDeflateStrips(tif.get(), spec, pixels, coding.level);
         if (!error.empty()) return error;
         if (!TIFFFlush(tif.get())) return tiffError.empty() ? "libtiff could not write" : tiffError;
