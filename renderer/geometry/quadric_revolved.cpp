@@ -135,16 +135,7 @@ bool RevolvedQuadric::OnShape(const V3d& p) const {
 
 int RevolvedQuadric::SphereRoots(double missed2, double dd, double lo, double hi,
                                  double t[2]) const {
-    // The ray's line passes the centre at the distance √(missed2/dd) and crosses the sphere
-    // half a chord, √(r² − missed2/dd), to either side of its nearest point.
-    const double h2 = sphereRadius2_ * dd - missed2;
-    if (!(h2 >= 0)) return 0;
-    // 1/dd runs beside the square root instead of after it.
-    const double half = std::sqrt(h2) * (1 / dd);
-    int n = 0;
-    if (-half > lo && -half < hi) t[n++] = -half;
-    if (half > lo && half < hi) t[n++] = half;
-    return n;
+    return SphereChordRoots(sphereRadius2_, missed2, dd, lo, hi, t);
 }
 
 bool RevolvedQuadric::IntersectPoint(const V3f& org, const V3f& dir, float tmin, float tmax,
